@@ -1,0 +1,84 @@
+#pragma once
+/// \file engine.hpp
+/// The engine: owns the discretization, the solver and the State; steps in time.
+///
+///   fsi::Engine engine(fsi::load_scenario("assets/scenarios/ball_drop.json"));
+///   while (engine.state().time_s < engine.scenario().numerics.end_time_s) {
+///     fsi::StepReport r = engine.step();
+///     if (!r.converged) std::cerr << r.message << "\n";
+///   }
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fsi/field_view.hpp"
+#include "fsi/scenario.hpp"
+#include "fsi/state.hpp"
+
+namespace fsi {
+
+/// Something noteworthy that happened during a step.
+struct StepEvent {
+  enum class Kind { real_contact, contact_force_active, step_halved, rolled_back, non_finite };
+  Kind kind;
+  double time_s = 0.0;
+  Point2 where_m;          ///< place (contact: the interface point nearest the wall)
+  int wall = -1;           ///< index into Scenario::walls (contact events)
+  std::string text;
+};
+
+/// What one call of Engine::step() did.
+struct StepReport {
+  bool converged = false;
+  bool accepted = false;          ///< state advanced (false: rolled back)
+  int newton_iterations = 0;
+  int factorizations = 0;
+  std::vector<double> residual_norms;  ///< scaled residual before each iteration and at the end
+  double time_step_s = 0.0;
+  double time_s = 0.0;            ///< time after the step
+  // Wall-clock seconds spent in each stage of the step.
+  double geometry_seconds = 0.0;      ///< cut meshes, level set
+  double mapping_seconds = 0.0;       ///< IPS Newton (12.4), T_m, old values
+  double assembly_seconds = 0.0;
+  double factorization_seconds = 0.0;
+  double solve_seconds = 0.0;
+  std::vector<StepEvent> events;
+  std::string message;            ///< human-readable summary (failure reason if any)
+};
+
+class Engine {
+ public:
+  explicit Engine(Scenario scenario);
+  ~Engine();
+  Engine(Engine&&) noexcept;
+  Engine& operator=(Engine&&) noexcept;
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  /// One time step: at most scenario().numerics.newton_budget Newton iterations
+  /// (times the halvings allowed by the failure policy).
+  StepReport step();
+
+  const State& state() const;
+  /// Restore a state saved from an engine of the same scenario.
+  void set_state(const State& state);
+  /// Change a numerical parameter between steps (time step, Newton budget, ...).
+  void set_numerics(const NumericsSpec& numerics);
+
+  /// Copy of the current mesh and fields for renderers and exporters.
+  FieldView view() const;
+  const Scenario& scenario() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Writes the state with a format version and the scenario fingerprint.
+void save_checkpoint(const Engine& engine, const std::filesystem::path& file);
+/// Restores a checkpoint into an engine; throws InputError if the checkpoint belongs
+/// to another scenario or format version.
+void load_checkpoint(Engine& engine, const std::filesystem::path& file);
+
+}  // namespace fsi

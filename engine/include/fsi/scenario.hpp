@@ -1,0 +1,142 @@
+#pragma once
+/// \file scenario.hpp
+/// Everything that defines a simulation and does not change while it runs: geometry,
+/// mesh, materials, body, numerics, outputs. Defaults are the member initialisers and
+/// reproduce the chapter's Example 1 (falling ball) on the 4225-node mesh.
+///
+/// A Scenario is validated once where it is built (load_scenario / validate); all code
+/// after that relies on it. Units are SI and carried in the member names.
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "fsi/field_view.hpp"
+
+namespace fsi {
+
+/// One graded piece of a mesh axis: `patches` patches between coordinates `from` and
+/// `to`, the first patch (at `from`) of size `first`, the last (at `to`) of size `last`.
+/// Positions follow x(t) = from + L (c t + (1 - c) t^q), t = i/patches, with c and q
+/// chosen so the end sizes match (q = 1: uniform; q = 2: linearly growing sizes).
+/// `from` may be larger than `to` (a piece graded away from its start leftwards).
+struct AxisPiece {
+  double from_m = 0.0;
+  double to_m = 1.0;
+  int patches = 1;
+  double first_m = 1.0;  ///< size of the patch at `from` [m] (0: uniform)
+  double last_m = 1.0;   ///< size of the patch at `to` [m] (0: uniform)
+};
+
+/// One structured block of patches. Without `corners` the block is the axis-aligned
+/// rectangle spanned by the axes. With `corners` (counter-clockwise, starting at the
+/// lower-left), the axes live in the unit square [0,1]^2 and are mapped bilinearly;
+/// that is how the stairs' inclined plane is meshed. Blocks must meet node to node.
+struct BlockSpec {
+  std::vector<AxisPiece> x;  ///< patch lines in the first direction
+  std::vector<AxisPiece> y;  ///< patch lines in the second direction
+  bool mapped = false;
+  std::array<Point2, 4> corners{};
+};
+
+struct MeshSpec {
+  std::vector<BlockSpec> blocks;  ///< at least one
+  int refinements = 0;            ///< global refinements (each patch -> 2x2), 0..4
+};
+
+/// An elastic body. Only balls for now: the initial signed distance d0 is |x - c| - r.
+struct BodySpec {
+  Point2 center_m{0.0, 0.0};
+  double radius_m = 0.4;
+  Point2 initial_velocity_mps{0.0, 0.0};
+};
+
+struct FluidSpec {
+  double density_kgpm3 = 1000.0;   ///< rho_f
+  double viscosity_m2ps = 1.0e-3;  ///< kinematic nu_f
+};
+
+/// St. Venant-Kirchhoff solid (12.2).
+struct SolidSpec {
+  double density_kgpm3 = 1000.0;  ///< reference density rho_s^0
+  double mu_pa = 2.0e5;           ///< shear modulus mu_s [Pa]
+  double lambda_pa = 8.0e5;       ///< first Lame parameter lambda_s [Pa]
+};
+
+/// What to do with a step whose Newton iteration did not converge within the budget.
+enum class FailurePolicy {
+  accept_and_flag,   ///< keep the result, report converged = false
+  halve_step,        ///< retry with k/2 (up to max_halvings), then accept and flag
+  stop_and_rollback  ///< restore the state before the step and report failure
+};
+
+struct NumericsSpec {
+  double time_step_s = 2.0e-3;  ///< k
+  double end_time_s = 5.0;
+  int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)
+  double newton_rel_tol = 1.0e-8;    ///< stop when |R| <= rel_tol |R_0| ...
+  double newton_abs_tol = 1.0e-10;   ///< ... or |R| <= abs_tol (scaled residual)
+  /// Reuse the factorization while each iteration reduces the residual by this factor.
+  double reuse_contraction = 0.2;
+  FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
+  int max_halvings = 3;
+
+  double cip_gamma = 0.05;        ///< gamma of S_aniso (scaled by 1/(rho_f nu_f))
+  double solid_alpha = 0.1;       ///< alpha of the solid velocity stabilization (12.7)
+  double solid_s = 2.0;           ///< exponent s in alpha h^s
+  double blend_eps_patches = 1.5; ///< eps of the T_m blend g, in patch sizes
+  double blend_delta_patches = 3.0;  ///< delta of the T_m blend g, in patch sizes
+  /// T_m = id where the body is closer than this to a wall (the chapter's contact gap).
+  double identity_gap_m = 0.0;    ///< 0: one patch height at the wall
+};
+
+/// Penalty contact (Sect. 12.5): P_c = gamma_c (dist_0 - dist)/dist for dist < dist_0.
+struct ContactSpec {
+  double gamma_c = 0.0;  ///< [N/m] (0 disables contact)
+  double dist0_m = 0.0;  ///< reference distance dist_0 [m]
+};
+
+struct OutputSpec {
+  int frame_every = 10;        ///< write a frame every n-th step
+  int width_px = 1280;
+  int height_px = 720;
+  int fps = 30;
+  std::string field = "vy";    ///< vx | vy | vmag | p | umag
+  bool mesh_overlay = false;
+  double range_min = 0.0;      ///< fixed colour range (min == max: automatic)
+  double range_max = 0.0;
+};
+
+struct Scenario {
+  std::string name = "ball_drop";
+  std::filesystem::path source = "<defaults>";  ///< file it came from (for messages)
+  MeshSpec mesh;
+  /// No-slip walls. A domain boundary edge lying on a wall gets v = 0; every other
+  /// boundary edge is open (do-nothing). Walls also drive contact and distances.
+  std::vector<Segment2> walls;
+  BodySpec body;
+  FluidSpec fluid;
+  SolidSpec solid;
+  Point2 gravity_mps2{0.0, -0.5};  ///< acts on the solid only (NUMERICS.md 2)
+  NumericsSpec numerics;
+  ContactSpec contact;
+  OutputSpec output;
+};
+
+/// The chapter's Example 1 (falling ball) on the coarse 4225-node mesh, k = 2e-3 s.
+Scenario example1_scenario();
+
+/// Checks every field; throws fsi::InputError naming scenario.source, the key and the
+/// allowed range.
+void validate(const Scenario& scenario);
+
+/// Reads and validates a JSON scenario file. Throws fsi::InputError.
+Scenario load_scenario(const std::filesystem::path& file);
+/// Same, from a string (`origin` is used in error messages).
+Scenario parse_scenario(const std::string& json_text, const std::string& origin);
+/// The scenario as JSON (round-trips through parse_scenario).
+std::string to_json(const Scenario& scenario);
+/// A stable fingerprint of the scenario's physics and numerics (for checkpoints).
+std::string fingerprint(const Scenario& scenario);
+
+}  // namespace fsi

@@ -1,0 +1,46 @@
+#pragma once
+/// \file state.hpp
+/// What changes while a simulation runs (MuJoCo's mjData to Scenario's mjModel).
+/// Restoring a State and stepping on gives bit-identical results.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace fsi {
+
+/// Unknowns per node, node-major: index = kFieldsPerNode * node + field.
+enum Field : int { kVx = 0, kVy = 1, kUx = 2, kUy = 3, kP = 4 };
+inline constexpr int kFieldsPerNode = 5;
+
+/// The chapter's quantities of interest at one time level.
+struct Functionals {
+  double min_distance_m = 0.0;   ///< min over the discrete interface of dist to the walls
+  double bottom_y_m = 0.0;       ///< lowest point of the interface
+  double top_y_m = 0.0;          ///< highest point of the interface
+  double left_x_m = 0.0, right_x_m = 0.0;
+  double centroid_x_m = 0.0, centroid_y_m = 0.0;  ///< of the discrete solid domain
+  double mean_vy_mps = 0.0;      ///< solid-averaged vertical velocity
+  double mean_vx_mps = 0.0;      ///< solid-averaged horizontal velocity
+  double solid_area_m2 = 0.0;    ///< |S_h|
+  double mass_error = 0.0;       ///< j_mass = |pi r^2 rho0 - int_S J rho0| / (pi r^2 rho0)
+};
+
+struct State {
+  double time_s = 0.0;
+  long step = 0;
+  double time_step_s = 0.0;  ///< k used for the last step (may be halved by policy)
+
+  /// Unknowns of level m (v, u, p per node, see Field) on the mesh of level m.
+  Eigen::VectorXd solution;
+  /// Unknowns of level m-1 (needed by the IPS mapping (12.4)).
+  Eigen::VectorXd previous_solution;
+  /// Node positions [m] (x, y per node) of the cut meshes of level m and m-1: each
+  /// level's mesh is built from the displacement of the level before it.
+  Eigen::VectorXd node_xy;
+  Eigen::VectorXd previous_node_xy;
+
+  Functionals functionals;
+};
+
+}  // namespace fsi

@@ -1,0 +1,72 @@
+#include "solve/sparse_lu.hpp"
+
+#include <umfpack.h>
+
+#include <cassert>
+#include <cstring>
+
+namespace fsi::solve {
+
+SparseLU::~SparseLU() {
+  free_numeric();
+  free_symbolic();
+}
+
+void SparseLU::free_numeric() {
+  if (numeric_) umfpack_di_free_numeric(&numeric_);
+  numeric_ = nullptr;
+}
+
+void SparseLU::free_symbolic() {
+  if (symbolic_) umfpack_di_free_symbolic(&symbolic_);
+  symbolic_ = nullptr;
+}
+
+bool SparseLU::factorize(const Matrix& a) {
+  assert(a.isCompressed() && a.rows() == a.cols());
+  const bool same_pattern = symbolic_ && a.rows() == rows_ && a.nonZeros() == nonzeros_ &&
+                            std::memcmp(outer_.data(), a.outerIndexPtr(),
+                                        sizeof(int) * (a.rows() + 1)) == 0;
+  rows_ = a.rows();
+  nonzeros_ = a.nonZeros();
+  outer_ = Eigen::Map<const Eigen::VectorXi>(a.outerIndexPtr(), rows_ + 1);
+  inner_ = Eigen::Map<const Eigen::VectorXi>(a.innerIndexPtr(), nonzeros_);
+  values_ = Eigen::Map<const Eigen::VectorXd>(a.valuePtr(), nonzeros_);
+
+  double control[UMFPACK_CONTROL];
+  double info[UMFPACK_INFO];
+  umfpack_di_defaults(control);
+  free_numeric();
+  if (!same_pattern) {
+    free_symbolic();
+    const int status = umfpack_di_symbolic(static_cast<int>(rows_), static_cast<int>(rows_),
+                                           outer_.data(), inner_.data(), values_.data(),
+                                           &symbolic_, control, info);
+    if (status != UMFPACK_OK) {
+      free_symbolic();
+      return false;
+    }
+    ++symbolic_count_;
+  }
+  const int status = umfpack_di_numeric(outer_.data(), inner_.data(), values_.data(), symbolic_,
+                                        &numeric_, control, info);
+  rcond_ = info[UMFPACK_RCOND];
+  if (status != UMFPACK_OK) {  // includes UMFPACK_WARNING_singular_matrix
+    free_numeric();
+    return false;
+  }
+  return true;
+}
+
+Eigen::VectorXd SparseLU::solve(const Eigen::VectorXd& b) const {
+  assert(numeric_ && b.size() == rows_);
+  Eigen::VectorXd x(rows_);
+  double control[UMFPACK_CONTROL];
+  double info[UMFPACK_INFO];
+  umfpack_di_defaults(control);
+  umfpack_di_solve(UMFPACK_A, outer_.data(), inner_.data(), values_.data(), x.data(), b.data(),
+                   numeric_, control, info);
+  return x;
+}
+
+}  // namespace fsi::solve

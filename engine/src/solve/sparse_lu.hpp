@@ -1,0 +1,48 @@
+#pragma once
+/// \file sparse_lu.hpp
+/// Sparse LU through UMFPACK with the symbolic analysis done once.
+///
+/// The locally modified FE space keeps its DoFs and its sparsity pattern whatever the
+/// interface does, so the (expensive) fill-reducing ordering and symbolic analysis are
+/// computed for the first matrix and reused for every later numeric factorization.
+#include <Eigen/SparseCore>
+
+namespace fsi::solve {
+
+class SparseLU {
+ public:
+  using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+  SparseLU() = default;
+  ~SparseLU();
+  SparseLU(const SparseLU&) = delete;
+  SparseLU& operator=(const SparseLU&) = delete;
+
+  /// Numeric factorization of `a` (compressed). The first call, or a call with a
+  /// different pattern (size / nonzero count), also runs the symbolic analysis.
+  /// Returns false if UMFPACK reports a singular or failed factorization.
+  bool factorize(const Matrix& a);
+  /// Solves A x = b with the last factorization. Requires a successful factorize().
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+
+  /// Reciprocal condition number estimate of the last factorization (UMFPACK's rcond).
+  double rcond() const { return rcond_; }
+  bool factorized() const { return numeric_ != nullptr; }
+  int symbolic_analyses() const { return symbolic_count_; }
+
+ private:
+  void free_numeric();
+  void free_symbolic();
+
+  void* symbolic_ = nullptr;
+  void* numeric_ = nullptr;
+  Eigen::Index rows_ = 0;
+  Eigen::Index nonzeros_ = 0;
+  // Copies of the pattern the factorization refers to (UMFPACK solves need them).
+  Eigen::VectorXi outer_, inner_;
+  Eigen::VectorXd values_;
+  double rcond_ = 0.0;
+  int symbolic_count_ = 0;
+};
+
+}  // namespace fsi::solve
