@@ -1,0 +1,79 @@
+#pragma once
+/// \file cut_mesh.hpp
+/// Locally modified finite elements (Frei & Richter 2014): the patch mesh cut by a
+/// level set into sub-elements that resolve the interface.
+///
+/// Uncut patch: 4 bilinear sub-quads. Cut patch: the midpoint nodes of the cut sides
+/// move onto the interface, the centre node is placed so that the interface is a
+/// union of sub-element edges, and the patch splits into 8 linear triangles:
+///
+///   A: two adjacent sides cut (one corner isolated)  -> triangle at the corner + fan
+///   B: two opposite sides cut                         -> 4 quads through the moved
+///                                                        centre, each split in two
+///   C: a corner on the interface and a far side cut  -> 3 + 5 triangles
+///   D: two opposite corners on the interface          -> 4 + 4 triangles
+///
+/// Snapping is global: a cut closer than `snap` (relative to the side length) to a
+/// corner puts the interface through that corner for every patch sharing it, so the
+/// moved nodes of neighbouring patches always agree (the space stays conforming).
+/// The phase of a sub-element comes from the discrete nodal colouring (corner signs),
+/// never from the continuous level set at quadrature points.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "fsi/field_view.hpp"
+#include "mesh/patch_mesh.hpp"
+
+namespace fsi::fe {
+
+using mesh::Vec2;
+
+enum class PatchKind : std::uint8_t { uncut = 0, A, B, C, D };
+
+struct SubElement {
+  std::array<int, 4> node{-1, -1, -1, -1};  ///< global nodes, counter-clockwise
+  int vertices = 4;                          ///< 4: bilinear quad, 3: linear triangle
+  Phase phase = Phase::fluid;
+  int patch = -1;
+};
+
+struct InterfaceSegment {
+  Vec2 a, b;
+  int patch = -1;
+  std::array<int, 2> node{};  ///< the two mesh nodes it joins
+};
+
+/// Level set: negative in the solid, positive in the fluid.
+using LevelSet = std::function<double(const Vec2&)>;
+
+struct CutOptions {
+  /// Cuts closer than snap * (side length) to a corner go through the corner.
+  double snap = 1e-6;
+};
+
+struct CutMesh {
+  std::vector<Vec2> x;                  ///< node positions [m] (moved in cut patches)
+  std::vector<SubElement> elements;     ///< patch p owns [first_element[p], first_element[p+1])
+  std::vector<int> first_element;
+  std::vector<PatchKind> kind;          ///< per patch
+  std::vector<std::int8_t> corner_sign; ///< per node: -1 solid, +1 fluid, 0 on the interface (corners only)
+  std::vector<InterfaceSegment> interface;
+  std::vector<char> touches_solid;      ///< per node: belongs to a solid sub-element
+  std::vector<char> touches_fluid;      ///< per node: belongs to a fluid sub-element
+  int saddle_patches = 0;               ///< patches with 4 cut sides (treated as uncut)
+
+  int num_elements() const { return static_cast<int>(elements.size()); }
+};
+
+/// Cuts `mesh` by the level set `phi` (evaluated at corners and along cut sides).
+CutMesh build_cut_mesh(const mesh::PatchMesh& mesh, const LevelSet& phi,
+                       const CutOptions& options = {});
+
+/// Signed area of a sub-element [m^2] (positive when counter-clockwise).
+double element_area(const CutMesh& cut, const SubElement& e);
+/// Smallest and largest interior angle of a sub-element [rad].
+std::array<double, 2> element_angle_range(const CutMesh& cut, const SubElement& e);
+
+}  // namespace fsi::fe
