@@ -1,0 +1,63 @@
+#include "forms/pressure_stabilization.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace fsi::forms {
+namespace {
+
+void add(solve::SparseMatrix& a, int row, int col, double v) {
+  const int k = solve::value_index(a, row, col);
+  if (k >= 0) a.valuePtr()[k] += v;
+}
+
+}  // namespace
+
+void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& cut,
+                                const std::vector<fe::StabilizationEdge>& edges, double gamma,
+                                int stride, int field, solve::SparseMatrix& a) {
+  for (const fe::StabilizationEdge& se : edges) {
+    const fe::SubElement& e1 = cut.elements[se.element1];
+    const fe::SubElement& e2 = cut.elements[se.element2];
+    const bool fluid1 = e1.phase == Phase::fluid, fluid2 = e2.phase == Phase::fluid;
+    if (!fluid1 && !fluid2) continue;
+    const double hp = std::max(mesh.patches[e1.patch].size_m, mesh.patches[e2.patch].size_m);
+    const double scale = gamma * hp * hp;
+    for (int q = 0; q < 2; ++q) {
+      const double w = scale * se.weight[q];
+      if (se.in_cut_patch) {
+        // {h_n grad p . grad xi}: each fluid side on its own, half weight.
+        for (int s = 0; s < 2; ++s) {
+          const fe::SubElement& e = s == 0 ? e1 : e2;
+          if (e.phase != Phase::fluid) continue;
+          const fe::ShapeValues& sv = s == 0 ? se.side1[q] : se.side2[q];
+          const double f = 0.5 * w * (s == 0 ? se.hn1_m : se.hn2_m);
+          for (int i = 0; i < e.vertices; ++i)
+            for (int j = 0; j < e.vertices; ++j)
+              add(a, stride * e.node[i] + field, stride * e.node[j] + field,
+                  f * sv.grad[i].dot(sv.grad[j]));
+        }
+      } else {
+        if (!(fluid1 && fluid2)) continue;
+        // [grad p] = grad p|K1 - grad p|K2 over the union of both elements' nodes.
+        std::array<int, 8> node{};
+        std::array<mesh::Vec2, 8> jump;
+        int n = 0;
+        for (int i = 0; i < e1.vertices; ++i) {
+          node[n] = e1.node[i];
+          jump[n++] = se.side1[q].grad[i];
+        }
+        for (int i = 0; i < e2.vertices; ++i) {
+          node[n] = e2.node[i];
+          jump[n++] = -se.side2[q].grad[i];
+        }
+        const double f = w * 0.5 * (se.hn1_m + se.hn2_m);
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j)
+            add(a, stride * node[i] + field, stride * node[j] + field, f * jump[i].dot(jump[j]));
+      }
+    }
+  }
+}
+
+}  // namespace fsi::forms
