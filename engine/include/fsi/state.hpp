@@ -2,6 +2,7 @@
 /// \file state.hpp
 /// What changes while a simulation runs (MuJoCo's mjData to Scenario's mjModel).
 /// Restoring a State and stepping on gives bit-identical results.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -35,10 +36,13 @@ struct State {
   Eigen::VectorXd solution;
   /// Unknowns of level m-1 (needed by the IPS mapping (12.4)).
   Eigen::VectorXd previous_solution;
-  /// Node positions [m] (x, y per node) of the cut meshes of level m and m-1: each
-  /// level's mesh is built from the displacement of the level before it.
-  Eigen::VectorXd node_xy;
-  Eigen::VectorXd previous_node_xy;
+  /// The discrete interface of the meshes of level m and m-1 (each level's mesh is
+  /// built from the displacement of the level before it, so it cannot be recomputed
+  /// from this state alone): per node the corner colouring (-1 solid, +1 fluid, 0 on
+  /// the interface or not a patch corner), per grid edge the cut parameter in (0, 1)
+  /// or -1 where the edge is not cut.
+  std::vector<std::int8_t> corner_sign, previous_corner_sign;
+  std::vector<double> edge_cut, previous_edge_cut;
 
   Functionals functionals;
 };

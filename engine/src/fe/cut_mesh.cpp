@@ -109,41 +109,52 @@ Phase phase_of(int sign) { return sign < 0 ? Phase::solid : Phase::fluid; }
 
 }  // namespace
 
-CutMesh build_cut_mesh(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& options) {
-  CutMesh cut;
-  cut.x = mesh.nodes;
+CutData cut_data(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& options) {
+  CutData data;
   const int n_nodes = mesh.num_nodes();
-
   // 1. Corner colouring. Exact zeros are interface points.
   std::vector<double> value(n_nodes, 0.0);
-  cut.corner_sign.assign(n_nodes, 0);
+  data.corner_sign.assign(n_nodes, 0);
   for (int n = 0; n < n_nodes; ++n) {
     if (!mesh.is_corner[n]) continue;
     value[n] = phi(mesh.nodes[n]);
-    cut.corner_sign[n] = value[n] > 0.0 ? 1 : (value[n] < 0.0 ? -1 : 0);
+    data.corner_sign[n] = value[n] > 0.0 ? 1 : (value[n] < 0.0 ? -1 : 0);
   }
-
-  // 2. Cut points on sign-changing grid edges; global snapping to corners.
+  // 2. Cut points on sign-changing grid edges; global snapping to corners, so that
+  // every patch sharing a corner sees the same decision.
   const int n_edges = static_cast<int>(mesh.edges.size());
-  std::vector<double> t_cut(n_edges, -1.0);
+  data.edge_cut.assign(n_edges, -1.0);
   for (int e = 0; e < n_edges; ++e) {
     const mesh::GridEdge& g = mesh.edges[e];
-    if (cut.corner_sign[g.a] * cut.corner_sign[g.b] >= 0) continue;
-    const double t = edge_zero(phi, mesh.nodes[g.a], mesh.nodes[g.b], value[g.a], value[g.b]);
-    t_cut[e] = t;
+    if (data.corner_sign[g.a] * data.corner_sign[g.b] >= 0) continue;
+    data.edge_cut[e] = edge_zero(phi, mesh.nodes[g.a], mesh.nodes[g.b], value[g.a], value[g.b]);
   }
   for (int e = 0; e < n_edges; ++e) {
-    if (t_cut[e] < 0.0) continue;
+    const double t = data.edge_cut[e];
+    if (t < 0.0) continue;
     const mesh::GridEdge& g = mesh.edges[e];
-    if (t_cut[e] < options.snap) cut.corner_sign[g.a] = 0;
-    else if (t_cut[e] > 1.0 - options.snap) cut.corner_sign[g.b] = 0;
+    if (t < options.snap) data.corner_sign[g.a] = 0;
+    else if (t > 1.0 - options.snap) data.corner_sign[g.b] = 0;
   }
+  for (int e = 0; e < n_edges; ++e) {
+    const mesh::GridEdge& g = mesh.edges[e];
+    if (data.corner_sign[g.a] * data.corner_sign[g.b] >= 0) data.edge_cut[e] = -1.0;
+  }
+  return data;
+}
+
+CutMesh build_cut_mesh(const PatchMesh& mesh, const CutData& data) {
+  CutMesh cut;
+  cut.x = mesh.nodes;
+  cut.corner_sign = data.corner_sign;
+  const int n_nodes = mesh.num_nodes();
+  const int n_edges = static_cast<int>(mesh.edges.size());
   std::vector<char> edge_cut(n_edges, 0);
   for (int e = 0; e < n_edges; ++e) {
+    if (data.edge_cut[e] < 0.0) continue;
     const mesh::GridEdge& g = mesh.edges[e];
-    if (t_cut[e] < 0.0 || cut.corner_sign[g.a] * cut.corner_sign[g.b] >= 0) continue;
     edge_cut[e] = 1;
-    cut.x[g.mid] = mesh.nodes[g.a] + t_cut[e] * (mesh.nodes[g.b] - mesh.nodes[g.a]);
+    cut.x[g.mid] = mesh.nodes[g.a] + data.edge_cut[e] * (mesh.nodes[g.b] - mesh.nodes[g.a]);
   }
 
   // 3. Patch by patch: configuration, centre node, sub-elements.

@@ -67,9 +67,25 @@ struct CutMesh {
   int num_elements() const { return static_cast<int>(elements.size()); }
 };
 
-/// Cuts `mesh` by the level set `phi` (evaluated at corners and along cut sides).
-CutMesh build_cut_mesh(const mesh::PatchMesh& mesh, const LevelSet& phi,
-                       const CutOptions& options = {});
+/// The discrete interface in compact form: everything build_cut_mesh needs besides the
+/// patch mesh. Stored in checkpoints, so that a restored state rebuilds identical meshes.
+struct CutData {
+  std::vector<std::int8_t> corner_sign;  ///< per node: -1 solid, +1 fluid, 0 interface (0 for non-corners)
+  std::vector<double> edge_cut;          ///< per grid edge: cut parameter t in (0,1), or -1
+};
+
+/// Colours the corners by phi and finds the cut points on sign-changing grid edges
+/// (with global snapping to corners).
+CutData cut_data(const mesh::PatchMesh& mesh, const LevelSet& phi, const CutOptions& options = {});
+
+/// Builds the sub-elements from the compact description.
+CutMesh build_cut_mesh(const mesh::PatchMesh& mesh, const CutData& data);
+
+/// Both steps: cuts `mesh` by the level set `phi`.
+inline CutMesh build_cut_mesh(const mesh::PatchMesh& mesh, const LevelSet& phi,
+                              const CutOptions& options = {}) {
+  return build_cut_mesh(mesh, cut_data(mesh, phi, options));
+}
 
 /// Signed area of a sub-element [m^2] (positive when counter-clockwise).
 double element_area(const CutMesh& cut, const SubElement& e);

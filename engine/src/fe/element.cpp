@@ -85,6 +85,22 @@ void append_quadrature(const CutMesh& cut, const SubElement& e, std::vector<Quad
     }
 }
 
+std::array<double, 2> edge_reference(const SubElement& e, int i, double s) {
+  if (e.vertices == 4) {
+    switch (i) {
+      case 0: return {s, 0.0};
+      case 1: return {1.0, s};
+      case 2: return {1.0 - s, 1.0};
+      default: return {0.0, 1.0 - s};
+    }
+  }
+  switch (i) {
+    case 0: return {s, 0.0};
+    case 1: return {1.0 - s, s};
+    default: return {0.0, 1.0 - s};
+  }
+}
+
 bool reference_coordinates(const CutMesh& cut, const SubElement& e, const Vec2& x, double& xi,
                            double& eta) {
   const Vec2& x0 = cut.x[e.node[0]];

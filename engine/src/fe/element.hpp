@@ -28,6 +28,10 @@ struct QuadraturePoint : ShapeValues {
 /// counter-clockwise from (0,0); triangles barycentric (xi, eta) = (lambda_1, lambda_2).
 ShapeValues shape_at_reference(const CutMesh& cut, const SubElement& e, double xi, double eta);
 
+/// Reference coordinates of the point at parameter s in [0,1] along local edge i of e
+/// (from vertex i to vertex i + 1, counter-clockwise).
+std::array<double, 2> edge_reference(const SubElement& e, int i, double s);
+
 /// Appends the quadrature points of one element.
 void append_quadrature(const CutMesh& cut, const SubElement& e, std::vector<QuadraturePoint>& out);
 

@@ -4,27 +4,6 @@
 #include <unordered_map>
 
 namespace fsi::fe {
-namespace {
-
-/// Reference coordinates of the point at parameter s along local edge i of e
-/// (from vertex i to vertex i+1).
-std::array<double, 2> edge_reference(const SubElement& e, int i, double s) {
-  if (e.vertices == 4) {
-    switch (i) {
-      case 0: return {s, 0.0};
-      case 1: return {1.0, s};
-      case 2: return {1.0 - s, 1.0};
-      default: return {0.0, 1.0 - s};
-    }
-  }
-  switch (i) {
-    case 0: return {s, 0.0};
-    case 1: return {1.0 - s, s};
-    default: return {0.0, 1.0 - s};
-  }
-}
-
-}  // namespace
 
 std::vector<StabilizationEdge> build_stabilization_edges(const CutMesh& cut) {
   // First occurrence of each undirected edge: (element, local edge index).

@@ -1,0 +1,241 @@
+// Engine::step() reads like the chapter (Sect. 12.3): the geometry of the new level is
+// explicit (built from the newest displacement) -> T_m and the old values at T_m ->
+// Newton on the monolithic system -> functionals -> report.
+#include "fsi/engine.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "core/field_view_builder.hpp"
+#include "core/fsi_system.hpp"
+#include "core/functionals.hpp"
+#include "fe/point_locator.hpp"
+#include "fsi/error.hpp"
+#include "interface/body.hpp"
+#include "interface/step_mapping.hpp"
+#include "mesh/patch_mesh.hpp"
+#include "solve/newton.hpp"
+
+namespace fsi {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+struct Engine::Impl {
+  explicit Impl(Scenario s)
+      : scenario(std::move(s)),
+        numerics(scenario.numerics),
+        mesh(mesh::build_patch_mesh(scenario.mesh, scenario.walls)),
+        buckets(mesh),
+        system(scenario, mesh),
+        newton(system.pattern()) {
+    initialize();
+  }
+
+  Scenario scenario;
+  NumericsSpec numerics;  ///< may be changed between steps (set_numerics)
+  mesh::PatchMesh mesh;
+  fe::PatchBuckets buckets;
+  core::FsiSystem system;
+  solve::NewtonSolver newton;
+  State state;
+  // Meshes of level m (the current solution's), m-1, and m+1 (built from u^m: the
+  // geometry of the next step, and where the body is now).
+  fe::CutMesh cut_cur, cut_prev, cut_next;
+  fe::CutData data_next;
+  fe::QuadratureTable quad_cur;
+
+  void initialize() {
+    const int n = mesh.num_nodes();
+    const fe::CutData data0 = fe::cut_data(mesh, [this](const mesh::Vec2& x) {
+      return interface::initial_distance(scenario.body, x);
+    });
+    cut_cur = fe::build_cut_mesh(mesh, data0);
+    cut_prev = cut_cur;
+    state = State{};
+    state.time_step_s = numerics.time_step_s;
+    state.solution = Eigen::VectorXd::Zero(kFieldsPerNode * n);
+    for (int i = 0; i < n; ++i)
+      if (cut_cur.touches_solid[i]) {
+        state.solution[kFieldsPerNode * i + kVx] = scenario.body.initial_velocity_mps.x;
+        state.solution[kFieldsPerNode * i + kVy] = scenario.body.initial_velocity_mps.y;
+      }
+    for (int i = 0; i < n; ++i)
+      if (mesh.on_wall[i]) state.solution.segment(kFieldsPerNode * i, 2).setZero();
+    state.previous_solution = state.solution;
+    state.corner_sign = state.previous_corner_sign = data0.corner_sign;
+    state.edge_cut = state.previous_edge_cut = data0.edge_cut;
+    after_state_change();
+  }
+
+  /// Rebuilds everything derived from the state: meshes of level m and m-1, the next
+  /// geometry and the functionals.
+  void rebuild_from_state() {
+    cut_cur = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut});
+    cut_prev = fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut});
+    after_state_change();
+  }
+
+  void after_state_change() {
+    quad_cur = fe::build_quadrature(cut_cur);
+    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution));
+    cut_next = fe::build_cut_mesh(mesh, data_next);
+    state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
+  }
+
+  /// One attempt at a step of size k on the geometry cut_next. Does not touch the state.
+  solve::NewtonResult attempt(double k, const fe::QuadratureTable& quad, Eigen::VectorXd& x,
+                              StepReport& report) {
+    auto t0 = std::chrono::steady_clock::now();
+    system.set_geometry(cut_next, quad, k);
+    report.geometry_seconds += seconds_since(t0);
+
+    t0 = std::chrono::steady_clock::now();
+    interface::MappingOptions mo;
+    mo.k_s = k;
+    mo.eps_patches = numerics.blend_eps_patches;
+    mo.delta_patches = numerics.blend_delta_patches;
+    mo.identity_gap_m = numerics.identity_gap_m;
+    std::vector<forms::OldValues> old;
+    const interface::MappingStats ms = interface::compute_old_values(
+        mesh, buckets, cut_next, quad, {&cut_cur, &state.solution}, {&cut_prev, &state.previous_solution},
+        scenario.body, scenario.walls, mo, old);
+    system.set_old_values(std::move(old));
+    report.mapping_seconds += seconds_since(t0);
+    if (ms.ips_failures > 0) {
+      report.message += std::to_string(ms.ips_failures) + " IPS point(s) did not converge; ";
+    }
+
+    x = state.solution;
+    newton.reset();  // a step never depends on an earlier step's factorization: restorable
+    solve::NewtonOptions no;
+    no.budget = numerics.newton_budget;
+    no.rel_tol = numerics.newton_rel_tol;
+    no.abs_tol = numerics.newton_abs_tol;
+    no.reuse_contraction = numerics.reuse_contraction;
+    solve::NewtonResult r = newton.solve(system, x, no);
+    report.newton_iterations += r.iterations;
+    report.factorizations += r.factorizations;
+    report.residual_norms.insert(report.residual_norms.end(), r.norms.begin(), r.norms.end());
+    report.assembly_seconds += r.assembly_seconds;
+    report.factorization_seconds += r.factorization_seconds;
+    report.solve_seconds += r.solve_seconds;
+    return r;
+  }
+
+  void accept(Eigen::VectorXd&& x, double k, const fe::QuadratureTable& quad_next, StepReport& report) {
+    state.previous_solution = std::move(state.solution);
+    state.solution = std::move(x);
+    state.previous_corner_sign = std::move(state.corner_sign);
+    state.previous_edge_cut = std::move(state.edge_cut);
+    state.corner_sign = data_next.corner_sign;
+    state.edge_cut = data_next.edge_cut;
+    state.time_s += k;
+    state.step += 1;
+    state.time_step_s = k;
+    cut_prev = std::move(cut_cur);
+    cut_cur = std::move(cut_next);
+    quad_cur = quad_next;
+    const auto t0 = std::chrono::steady_clock::now();
+    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution));
+    cut_next = fe::build_cut_mesh(mesh, data_next);
+    report.geometry_seconds += seconds_since(t0);
+    state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
+    report_contact(report);
+  }
+
+  /// Real contact: a wall node inside the body (or on its interface) in the new geometry.
+  void report_contact(StepReport& report) const {
+    for (const mesh::GridEdge& e : mesh.edges) {
+      if (e.wall < 0) continue;
+      for (int n : {e.a, e.b}) {
+        if (cut_next.corner_sign[n] > 0) continue;
+        StepEvent ev{StepEvent::Kind::real_contact, state.time_s, {mesh.nodes[n].x(), mesh.nodes[n].y()},
+                     e.wall, "real contact: the body touches wall " + std::to_string(e.wall)};
+        report.events.push_back(ev);
+        return;
+      }
+    }
+  }
+
+  StepReport step() {
+    StepReport report;
+    double k = numerics.time_step_s;
+    const fe::QuadratureTable quad = fe::build_quadrature(cut_next);
+    for (int attempt_no = 0;; ++attempt_no) {
+      Eigen::VectorXd x;
+      const solve::NewtonResult r = attempt(k, quad, x, report);
+      const bool finite = !r.non_finite && x.allFinite();
+      report.converged = r.converged && finite;
+      if (report.converged || (finite && numerics.failure_policy == FailurePolicy::accept_and_flag)) {
+        accept(std::move(x), k, quad, report);
+        report.accepted = true;
+        break;
+      }
+      if (finite && numerics.failure_policy == FailurePolicy::halve_step && attempt_no < numerics.max_halvings) {
+        k *= 0.5;
+        report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
+                                 "Newton did not converge: retrying with k = " + std::to_string(k)});
+        continue;
+      }
+      if (finite && numerics.failure_policy == FailurePolicy::halve_step) {
+        accept(std::move(x), k, quad, report);
+        report.accepted = true;
+        break;
+      }
+      // stop_and_rollback, or a non-finite result (NaN/Inf never leaves the engine).
+      report.accepted = false;
+      report.events.push_back({finite ? StepEvent::Kind::rolled_back : StepEvent::Kind::non_finite,
+                               state.time_s, {}, -1,
+                               finite ? "rolled back to the state before the step"
+                                      : "non-finite values: step rejected, state rolled back"});
+      break;
+    }
+    if (system.max_contact_pressure() > 0.0)
+      report.events.push_back({StepEvent::Kind::contact_force_active, state.time_s, {}, -1,
+                               "penalty contact active, max pressure " +
+                                   std::to_string(system.max_contact_pressure()) + " Pa"});
+    report.time_step_s = k;
+    report.time_s = state.time_s;
+    std::ostringstream msg;
+    msg << (report.converged ? "converged" : "NOT converged") << " in " << report.newton_iterations
+        << " Newton iteration(s), " << report.factorizations << " factorization(s)";
+    if (!report.residual_norms.empty()) msg << ", residual " << report.residual_norms.front() << " -> " << report.residual_norms.back();
+    if (!report.accepted) msg << "; step rejected";
+    report.message = msg.str() + (report.message.empty() ? "" : "; " + report.message);
+    return report;
+  }
+};
+
+Engine::Engine(Scenario scenario) : impl_(std::make_unique<Impl>(std::move(scenario))) {}
+Engine::~Engine() = default;
+Engine::Engine(Engine&&) noexcept = default;
+Engine& Engine::operator=(Engine&&) noexcept = default;
+
+StepReport Engine::step() { return impl_->step(); }
+const State& Engine::state() const { return impl_->state; }
+const Scenario& Engine::scenario() const { return impl_->scenario; }
+void Engine::set_numerics(const NumericsSpec& numerics) { impl_->numerics = numerics; }
+
+void Engine::set_state(const State& state) {
+  const std::size_t n = impl_->mesh.num_nodes(), e = impl_->mesh.edges.size();
+  if (state.solution.size() != static_cast<Eigen::Index>(kFieldsPerNode * n) ||
+      state.previous_solution.size() != state.solution.size() || state.corner_sign.size() != n ||
+      state.previous_corner_sign.size() != n || state.edge_cut.size() != e || state.previous_edge_cut.size() != e)
+    throw InputError("<state>", "", "state does not fit this scenario's mesh (" + std::to_string(n) + " nodes)");
+  if (!state.solution.allFinite() || !state.previous_solution.allFinite())
+    throw InputError("<state>", "/solution", "contains non-finite values");
+  impl_->state = state;
+  impl_->rebuild_from_state();
+}
+
+FieldView Engine::view() const {
+  return core::build_field_view(impl_->mesh, impl_->cut_cur, impl_->state, impl_->scenario);
+}
+
+}  // namespace fsi

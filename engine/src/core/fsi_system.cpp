@@ -1,0 +1,235 @@
+#include "core/fsi_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "forms/pressure_stabilization.hpp"
+#include "fsi/state.hpp"
+#include "interface/step_mapping.hpp"
+
+namespace fsi::core {
+namespace {
+
+/// Field coupling of the monolithic system (fields vx, vy, ux, uy, p):
+/// momentum couples to everything; the displacement equation to v and u; the
+/// pressure rows (divergence / extension) to v and p. Between neighbouring patches
+/// only the CIP stabilization couples (p-p).
+solve::FieldCoupling patch_coupling() {
+  return {{1, 1, 1, 1, 1}, {1, 1, 1, 1, 1}, {1, 1, 1, 1, 0}, {1, 1, 1, 1, 0}, {1, 1, 0, 0, 1}};
+}
+solve::FieldCoupling neighbor_coupling() {
+  solve::FieldCoupling c(5, std::vector<char>(5, 0));
+  c[kP][kP] = 1;
+  return c;
+}
+
+}  // namespace
+
+FsiSystem::FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh)
+    : scenario_(scenario), mesh_(mesh) {
+  forms::FsiCoefficients& c = coefficients_;
+  c.k_s = scenario.numerics.time_step_s;
+  c.rho_f = scenario.fluid.density_kgpm3;
+  c.nu_f = scenario.fluid.viscosity_m2ps;
+  c.rho_s0 = scenario.solid.density_kgpm3;
+  c.mu_s = scenario.solid.mu_pa;
+  c.lambda_s = scenario.solid.lambda_pa;
+  c.gx = scenario.gravity_mps2.x;
+  c.gy = scenario.gravity_mps2.y;
+  c.alpha = scenario.numerics.solid_alpha;
+  c.s = scenario.numerics.solid_s;
+
+  pattern_ = solve::build_pattern(mesh, kFieldsPerNode, patch_coupling(), neighbor_coupling());
+  // No-slip walls: v = 0 on their nodes.
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    if (mesh.on_wall[n])
+      for (int f : {kVx, kVy}) dirichlet_dofs_.push_back(kFieldsPerNode * n + f);
+  std::vector<int> row_slot(pattern_.rows(), -1);
+  for (std::size_t i = 0; i < dirichlet_dofs_.size(); ++i) row_slot[dirichlet_dofs_[i]] = static_cast<int>(i);
+  dirichlet_row_entries_.assign(dirichlet_dofs_.size(), {});
+  for (int k = 0; k < pattern_.nonZeros(); ++k) {
+    const int row = pattern_.innerIndexPtr()[k];
+    if (row_slot[row] >= 0) dirichlet_row_entries_[row_slot[row]].push_back(k);
+  }
+}
+
+void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
+                             double time_step_s) {
+  cut_ = &cut;
+  quadrature_ = &quadrature;
+  coefficients_.k_s = time_step_s;
+
+  // Positions of every element's local entries in the value array.
+  entry_first_.assign(cut.num_elements() + 1, 0);
+  entry_.clear();
+  for (int k = 0; k < cut.num_elements(); ++k) {
+    entry_first_[k] = static_cast<int>(entry_.size());
+    const fe::SubElement& e = cut.elements[k];
+    const int nl = kFieldsPerNode * e.vertices;
+    for (int i = 0; i < nl; ++i)
+      for (int j = 0; j < nl; ++j)
+        entry_.push_back(solve::value_index(pattern_, kFieldsPerNode * e.node[i / kFieldsPerNode] + i % kFieldsPerNode,
+                                            kFieldsPerNode * e.node[j / kFieldsPerNode] + j % kFieldsPerNode));
+  }
+  entry_first_[cut.num_elements()] = static_cast<int>(entry_.size());
+
+  // CIP pressure stabilization: linear in p and fixed during the step.
+  cip_ = pattern_;
+  const double gamma = scenario_.numerics.cip_gamma / (coefficients_.rho_f * coefficients_.nu_f);
+  forms::add_pressure_stabilization(mesh_, cut, fe::build_stabilization_edges(cut), gamma,
+                                    kFieldsPerNode, kP, cip_);
+  build_open_sides();
+  build_contact_forces();
+}
+
+void FsiSystem::build_open_sides() {
+  const fe::CutMesh& cut = *cut_;
+  open_first_.assign(cut.num_elements() + 1, 0);
+  open_sides_.clear();
+  // Collect (element, local edge) of every sub-element side on an open grid edge.
+  std::vector<std::vector<forms::OpenBoundarySide>> per_element(cut.num_elements());
+  const double g = 0.5 / std::sqrt(3.0);
+  for (int p = 0; p < mesh_.num_patches(); ++p) {
+    const mesh::Patch& patch = mesh_.patches[p];
+    for (int s = 0; s < 4; ++s) {
+      const mesh::GridEdge& ge = mesh_.edges[patch.edge[s]];
+      if (!ge.boundary || ge.wall >= 0) continue;
+      for (int k = cut.first_element[p]; k < cut.first_element[p + 1]; ++k) {
+        const fe::SubElement& e = cut.elements[k];
+        for (int i = 0; i < e.vertices; ++i) {
+          const int a = e.node[i], b = e.node[(i + 1) % e.vertices];
+          const bool on_side = (a == ge.mid && (b == ge.a || b == ge.b)) || (b == ge.mid && (a == ge.a || a == ge.b));
+          if (!on_side) continue;
+          forms::OpenBoundarySide side;
+          const mesh::Vec2 d = cut.x[b] - cut.x[a];
+          const double len = d.norm();
+          side.nx = d.y() / len;
+          side.ny = -d.x() / len;
+          for (int q = 0; q < 2; ++q) {
+            const auto ref = fe::edge_reference(e, i, q == 0 ? 0.5 - g : 0.5 + g);
+            side.shape[q] = fe::shape_at_reference(cut, e, ref[0], ref[1]);
+            side.weight[q] = 0.5 * len;
+          }
+          per_element[k].push_back(side);
+        }
+      }
+    }
+  }
+  for (int k = 0; k < cut.num_elements(); ++k) {
+    open_first_[k] = static_cast<int>(open_sides_.size());
+    open_sides_.insert(open_sides_.end(), per_element[k].begin(), per_element[k].end());
+  }
+  open_first_[cut.num_elements()] = static_cast<int>(open_sides_.size());
+}
+
+void FsiSystem::build_contact_forces() {
+  // Penalty contact (Sect. 12.5): on the interface, where dist < dist_0, the solid feels
+  // the pressure P_c = gamma_c (dist_0 - dist) / dist, i.e. the traction -P_c n_s
+  // (n_s: outer normal of the solid), which pushes it away from the wall. In residual
+  // form this adds + int_I P_c n_s . phi.
+  const fe::CutMesh& cut = *cut_;
+  contact_force_.setZero(pattern_.rows());
+  max_contact_pressure_ = 0.0;
+  const double gamma_c = scenario_.contact.gamma_c, dist0 = scenario_.contact.dist0_m;
+  if (!(gamma_c > 0.0 && dist0 > 0.0)) return;
+  const double g = 0.5 / std::sqrt(3.0);
+  for (const fe::InterfaceSegment& seg : cut.interface) {
+    // Solid side: centroid of the patch's solid sub-elements.
+    mesh::Vec2 centroid = mesh::Vec2::Zero();
+    int count = 0;
+    for (int k = cut.first_element[seg.patch]; k < cut.first_element[seg.patch + 1]; ++k) {
+      const fe::SubElement& e = cut.elements[k];
+      if (e.phase != Phase::solid) continue;
+      for (int i = 0; i < e.vertices; ++i) centroid += cut.x[e.node[i]];
+      count += e.vertices;
+    }
+    if (count == 0) continue;
+    centroid /= count;
+    const mesh::Vec2 d = seg.b - seg.a;
+    const double len = d.norm();
+    if (len <= 0.0) continue;
+    mesh::Vec2 n(d.y() / len, -d.x() / len);
+    if (n.dot(0.5 * (seg.a + seg.b) - centroid) < 0.0) n = -n;
+    for (double s : {0.5 - g, 0.5 + g}) {
+      const mesh::Vec2 x = seg.a + s * d;
+      const double dist = interface::wall_distance(scenario_.walls, x);
+      if (dist >= dist0) continue;
+      const double pc = gamma_c * (dist0 - dist) / std::max(dist, 1e-3 * dist0);
+      max_contact_pressure_ = std::max(max_contact_pressure_, pc);
+      const double w = 0.5 * len * pc;
+      for (int f = 0; f < 2; ++f) {
+        contact_force_[kFieldsPerNode * seg.node[0] + f] += w * (1.0 - s) * n[f];
+        contact_force_[kFieldsPerNode * seg.node[1] + f] += w * s * n[f];
+      }
+    }
+  }
+}
+
+template <bool kJacobian>
+void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
+                         solve::SparseMatrix* jacobian) const {
+  using Scalar = std::conditional_t<kJacobian, forms::Jet, double>;
+  const fe::CutMesh& cut = *cut_;
+  r = contact_force_;
+  r.noalias() += cip_ * x;
+  if constexpr (kJacobian) {
+    Eigen::Map<Eigen::VectorXd>(jacobian->valuePtr(), jacobian->nonZeros()) =
+        Eigen::Map<const Eigen::VectorXd>(cip_.valuePtr(), cip_.nonZeros());
+  }
+  std::array<Scalar, forms::kMaxLocal> xl, rl;
+  for (int k = 0; k < cut.num_elements(); ++k) {
+    const fe::SubElement& e = cut.elements[k];
+    forms::ElementInput in;
+    in.element = &e;
+    in.qp = quadrature_->points.data() + quadrature_->first[k];
+    in.old = old_.data() + quadrature_->first[k];
+    in.num_qp = quadrature_->first[k + 1] - quadrature_->first[k];
+    in.h_patch_m = mesh_.patches[e.patch].size_m;
+    in.open_sides = open_sides_.data() + open_first_[k];
+    in.num_open_sides = open_first_[k + 1] - open_first_[k];
+    const int nl = kFieldsPerNode * e.vertices;
+    for (int a = 0; a < e.vertices; ++a) {
+      in.u_row_solid[a] = cut.touches_solid[e.node[a]];
+      in.p_row_fluid[a] = cut.touches_fluid[e.node[a]];
+      for (int f = 0; f < kFieldsPerNode; ++f) {
+        const double value = x[kFieldsPerNode * e.node[a] + f];
+        if constexpr (kJacobian) xl[kFieldsPerNode * a + f] = Scalar::variable(value, kFieldsPerNode * a + f);
+        else xl[kFieldsPerNode * a + f] = value;
+      }
+    }
+    for (int i = nl; i < forms::kMaxLocal; ++i) xl[i] = Scalar(0.0);
+    forms::element_residual<Scalar>(in, coefficients_, xl, rl);
+    for (int i = 0; i < nl; ++i) {
+      const int row = kFieldsPerNode * e.node[i / kFieldsPerNode] + i % kFieldsPerNode;
+      if constexpr (kJacobian) {
+        r[row] += rl[i].v;
+        const int* idx = entry_.data() + entry_first_[k] + i * nl;
+        double* values = jacobian->valuePtr();
+        for (int j = 0; j < nl; ++j)
+          if (idx[j] >= 0) values[idx[j]] += rl[i].d[j];
+      } else {
+        r[row] += rl[i];
+      }
+    }
+  }
+  // Dirichlet rows: x_d - 0 (no-slip walls).
+  for (std::size_t i = 0; i < dirichlet_dofs_.size(); ++i) {
+    const int d = dirichlet_dofs_[i];
+    r[d] = x[d];
+    if constexpr (kJacobian) {
+      for (int k : dirichlet_row_entries_[i]) jacobian->valuePtr()[k] = 0.0;
+      jacobian->coeffRef(d, d) = 1.0;
+    }
+  }
+}
+
+void FsiSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+  assemble<false>(x, r, nullptr);
+}
+
+void FsiSystem::residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& r,
+                                      solve::SparseMatrix& jacobian) const {
+  assemble<true>(x, r, &jacobian);
+}
+
+}  // namespace fsi::core

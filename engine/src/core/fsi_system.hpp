@@ -1,0 +1,73 @@
+#pragma once
+/// \file fsi_system.hpp
+/// The monolithic nonlinear system of one time step: R(x) = 0 for x = (v, u, p) per node.
+///
+/// The geometry of step m is explicit (built from u^{m-1}), so everything that depends
+/// on it -- sub-elements, quadrature, stabilization edges, old values at T_m, contact
+/// forces, positions of element entries in the fixed sparsity pattern -- is computed
+/// once per step in set_step() and reused by every Newton iteration.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fe/stabilization_edges.hpp"
+#include "forms/fsi_element.hpp"
+#include "fsi/scenario.hpp"
+#include "solve/sparsity.hpp"
+
+namespace fsi::core {
+
+class FsiSystem {
+ public:
+  FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh);
+
+  /// The empty (all-zero) matrix with the fixed pattern.
+  const solve::SparseMatrix& pattern() const { return pattern_; }
+  int size() const { return static_cast<int>(pattern_.rows()); }
+
+  /// Prepares a step on the sub-elements of `cut`: quadrature, edges, CIP matrix,
+  /// boundary sides, contact forces. Old values are set separately (set_old_values).
+  void set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
+                    double time_step_s);
+  /// Old values at T_m, one per quadrature point of the current geometry.
+  void set_old_values(std::vector<forms::OldValues> old) { old_ = std::move(old); }
+  void set_time_step(double k_s) { coefficients_.k_s = k_s; }
+
+  /// R(x). Dirichlet rows read x - g.
+  void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const;
+  /// R(x) and its exact Jacobian (values written into `jacobian`, which must have the
+  /// pattern of pattern()).
+  void residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& r,
+                             solve::SparseMatrix& jacobian) const;
+
+  /// The largest penalty contact pressure of this step [Pa] (0: inactive).
+  double max_contact_pressure() const { return max_contact_pressure_; }
+  const forms::FsiCoefficients& coefficients() const { return coefficients_; }
+
+ private:
+  template <bool kJacobian>
+  void assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* jacobian) const;
+  void build_open_sides();
+  void build_contact_forces();
+
+  const Scenario& scenario_;
+  const mesh::PatchMesh& mesh_;
+  forms::FsiCoefficients coefficients_;
+  solve::SparseMatrix pattern_;
+  std::vector<int> dirichlet_dofs_;
+  std::vector<std::vector<int>> dirichlet_row_entries_;  ///< value indices of each Dirichlet row
+
+  // Per step:
+  const fe::CutMesh* cut_ = nullptr;
+  const fe::QuadratureTable* quadrature_ = nullptr;
+  std::vector<forms::OldValues> old_;
+  solve::SparseMatrix cip_;                        ///< S_aniso on the p-p block
+  std::vector<int> entry_first_;                   ///< per element: offset into entry_
+  std::vector<int> entry_;                         ///< value index of (local i, local j)
+  std::vector<int> open_first_;                    ///< per element: offset into open_sides_
+  std::vector<forms::OpenBoundarySide> open_sides_;
+  Eigen::VectorXd contact_force_;                  ///< constant residual part
+  double max_contact_pressure_ = 0.0;
+};
+
+}  // namespace fsi::core

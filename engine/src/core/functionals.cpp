@@ -1,0 +1,68 @@
+#include "core/functionals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "interface/step_mapping.hpp"
+
+namespace fsi::core {
+
+Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geometry,
+                                const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
+                                const Eigen::VectorXd& solution) {
+  Functionals f;
+  const double inf = std::numeric_limits<double>::infinity();
+  f.min_distance_m = inf;
+  f.bottom_y_m = f.left_x_m = inf;
+  f.top_y_m = f.right_x_m = -inf;
+  for (const fe::InterfaceSegment& s : geometry.interface)
+    for (const mesh::Vec2& x : {s.a, s.b}) {
+      f.min_distance_m = std::min(f.min_distance_m, interface::wall_distance(scenario.walls, x));
+      f.bottom_y_m = std::min(f.bottom_y_m, x.y());
+      f.top_y_m = std::max(f.top_y_m, x.y());
+      f.left_x_m = std::min(f.left_x_m, x.x());
+      f.right_x_m = std::max(f.right_x_m, x.x());
+    }
+  if (geometry.interface.empty()) f.min_distance_m = f.bottom_y_m = f.top_y_m = f.left_x_m = f.right_x_m = 0.0;
+
+  double area = 0.0, mass = 0.0, cx = 0.0, cy = 0.0, mvx = 0.0, mvy = 0.0;
+  for (int k = 0; k < cut.num_elements(); ++k) {
+    const fe::SubElement& e = cut.elements[k];
+    if (e.phase != Phase::solid) continue;
+    for (int q = quadrature.first[k]; q < quadrature.first[k + 1]; ++q) {
+      const fe::QuadraturePoint& qp = quadrature.points[q];
+      double vx = 0, vy = 0, h00 = 0, h01 = 0, h10 = 0, h11 = 0;
+      for (int a = 0; a < e.vertices; ++a) {
+        const int base = kFieldsPerNode * e.node[a];
+        vx += qp.value[a] * solution[base + kVx];
+        vy += qp.value[a] * solution[base + kVy];
+        h00 += qp.grad[a].x() * solution[base + kUx];
+        h01 += qp.grad[a].y() * solution[base + kUx];
+        h10 += qp.grad[a].x() * solution[base + kUy];
+        h11 += qp.grad[a].y() * solution[base + kUy];
+      }
+      const double J = (1.0 - h00) * (1.0 - h11) - h01 * h10;
+      area += qp.weight;
+      mass += qp.weight * J;
+      cx += qp.weight * qp.x.x();
+      cy += qp.weight * qp.x.y();
+      mvx += qp.weight * vx;
+      mvy += qp.weight * vy;
+    }
+  }
+  f.solid_area_m2 = area;
+  if (area > 0.0) {
+    f.centroid_x_m = cx / area;
+    f.centroid_y_m = cy / area;
+    f.mean_vx_mps = mvx / area;
+    f.mean_vy_mps = mvy / area;
+  }
+  const double r = scenario.body.radius_m;
+  const double reference = std::numbers::pi * r * r;  // rho_s^0 cancels
+  f.mass_error = std::abs(reference - mass) / reference;
+  return f;
+}
+
+}  // namespace fsi::core

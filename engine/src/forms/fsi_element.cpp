@@ -1,0 +1,124 @@
+#include "forms/fsi_element.hpp"
+
+#include <cmath>
+
+namespace fsi::forms {
+
+template <class S>
+void element_residual(const ElementInput& in, const FsiCoefficients& c,
+                      const std::array<S, kMaxLocal>& x, std::array<S, kMaxLocal>& r) {
+  const fe::SubElement& e = *in.element;
+  const int n = e.vertices;
+  for (auto& ri : r) ri = S(0.0);
+  const double inv_k = 1.0 / c.k_s;
+  const bool solid = e.phase == Phase::solid;
+  const double mu_f = c.rho_f * c.nu_f;
+  const double stab = c.alpha * std::pow(in.h_patch_m, c.s);
+
+  for (int q = 0; q < in.num_qp; ++q) {
+    const fe::QuadraturePoint& qp = in.qp[q];
+    const OldValues& old = in.old[q];
+    const double w = qp.weight;
+    // Values and gradients at the point: v, u, p, G = grad v, H = grad u (G[i][j] = d v_i / d x_j).
+    S v[2] = {0.0, 0.0}, u[2] = {0.0, 0.0}, p = 0.0;
+    S G[2][2] = {{0.0, 0.0}, {0.0, 0.0}}, H[2][2] = {{0.0, 0.0}, {0.0, 0.0}}, gp[2] = {0.0, 0.0};
+    for (int a = 0; a < n; ++a) {
+      const double N = qp.value[a], dx = qp.grad[a].x(), dy = qp.grad[a].y();
+      for (int i = 0; i < 2; ++i) {
+        const S& va = x[5 * a + i];
+        const S& ua = x[5 * a + 2 + i];
+        v[i] += N * va;
+        u[i] += N * ua;
+        G[i][0] += dx * va;
+        G[i][1] += dy * va;
+        H[i][0] += dx * ua;
+        H[i][1] += dy * ua;
+      }
+      p += N * x[5 * a + 4];
+      gp[0] += dx * x[5 * a + 4];
+      gp[1] += dy * x[5 * a + 4];
+    }
+    const S wc[2] = {v[0] - old.tx, v[1] - old.ty};  // convective velocity v - d_t T
+    const double v_old[2] = {old.vx, old.vy}, u_old[2] = {old.ux, old.uy};
+
+    if (!solid) {
+      S acc[2], sigma[2][2];
+      for (int i = 0; i < 2; ++i) {
+        acc[i] = c.rho_f * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1]);
+        for (int j = 0; j < 2; ++j) sigma[i][j] = mu_f * (G[i][j] + G[j][i]);
+        sigma[i][i] -= p;
+      }
+      const S div = G[0][0] + G[1][1];
+      for (int a = 0; a < n; ++a) {
+        const double N = qp.value[a], dx = qp.grad[a].x(), dy = qp.grad[a].y();
+        for (int i = 0; i < 2; ++i) r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);
+        if (!in.u_row_solid[a])
+          for (int i = 0; i < 2; ++i)
+            r[5 * a + 2 + i] += (w * c.extension_u) * (H[i][0] * dx + H[i][1] * dy);
+        r[5 * a + 4] += (w * N) * div;
+      }
+    } else {
+      // F = I - grad u (the inverse of the Lagrangian deformation gradient).
+      const S F00 = 1.0 - H[0][0], F01 = -H[0][1], F10 = -H[1][0], F11 = 1.0 - H[1][1];
+      const S J = F00 * F11 - F01 * F10;
+      const S Fi00 = F11 / J, Fi01 = -F01 / J, Fi10 = -F10 / J, Fi11 = F00 / J;  // F^-1
+      // C^-1-type product F^-T F^-1 (symmetric), then Green-Lagrange E.
+      const S B00 = Fi00 * Fi00 + Fi10 * Fi10, B01 = Fi00 * Fi01 + Fi10 * Fi11;
+      const S B11 = Fi01 * Fi01 + Fi11 * Fi11;
+      const S E00 = 0.5 * (B00 - 1.0), E01 = 0.5 * B01, E11 = 0.5 * (B11 - 1.0);
+      const S trE = E00 + E11;
+      const S S00 = 2.0 * c.mu_s * E00 + c.lambda_s * trE, S01 = 2.0 * c.mu_s * E01;
+      const S S11 = 2.0 * c.mu_s * E11 + c.lambda_s * trE;
+      // sigma = J F^-1 S F^-T
+      const S A00 = Fi00 * S00 + Fi01 * S01, A01 = Fi00 * S01 + Fi01 * S11;
+      const S A10 = Fi10 * S00 + Fi11 * S01, A11 = Fi10 * S01 + Fi11 * S11;
+      S sigma[2][2];
+      sigma[0][0] = J * (A00 * Fi00 + A01 * Fi01);
+      sigma[0][1] = J * (A00 * Fi10 + A01 * Fi11);
+      sigma[1][0] = J * (A10 * Fi00 + A11 * Fi01);
+      sigma[1][1] = J * (A10 * Fi10 + A11 * Fi11);
+      const S rho = c.rho_s0 * J;
+      const double g[2] = {c.gx, c.gy};
+      S acc[2], du[2];
+      for (int i = 0; i < 2; ++i) {
+        acc[i] = rho * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1] - g[i]);
+        du[i] = (u[i] - u_old[i]) * inv_k + wc[0] * H[i][0] + wc[1] * H[i][1] - v[i];
+      }
+      for (int a = 0; a < n; ++a) {
+        const double N = qp.value[a], dx = qp.grad[a].x(), dy = qp.grad[a].y();
+        for (int i = 0; i < 2; ++i) {
+          r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);
+          r[5 * a + 2 + i] += w * (du[i] * N - stab * (G[i][0] * dx + G[i][1] * dy));
+        }
+        if (!in.p_row_fluid[a]) r[5 * a + 4] += (w * c.extension_p) * (gp[0] * dx + gp[1] * dy);
+      }
+    }
+  }
+
+  // Do-nothing correction on open boundaries: - <rho_f nu_f grad v^T n, phi>.
+  if (!solid)
+    for (int s = 0; s < in.num_open_sides; ++s) {
+      const OpenBoundarySide& side = in.open_sides[s];
+      for (int q = 0; q < 2; ++q) {
+        const fe::ShapeValues& sv = side.shape[q];
+        S G[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+        for (int a = 0; a < n; ++a)
+          for (int i = 0; i < 2; ++i) {
+            G[i][0] += sv.grad[a].x() * x[5 * a + i];
+            G[i][1] += sv.grad[a].y() * x[5 * a + i];
+          }
+        // (grad v^T n)_i = sum_j G[j][i] n_j
+        const S t[2] = {G[0][0] * side.nx + G[1][0] * side.ny, G[0][1] * side.nx + G[1][1] * side.ny};
+        for (int a = 0; a < n; ++a)
+          for (int i = 0; i < 2; ++i) r[5 * a + i] -= (side.weight[q] * mu_f * sv.value[a]) * t[i];
+      }
+    }
+}
+
+template void element_residual<double>(const ElementInput&, const FsiCoefficients&,
+                                       const std::array<double, kMaxLocal>&,
+                                       std::array<double, kMaxLocal>&);
+template void element_residual<Jet>(const ElementInput&, const FsiCoefficients&,
+                                    const std::array<Jet, kMaxLocal>&, std::array<Jet, kMaxLocal>&);
+
+}  // namespace fsi::forms

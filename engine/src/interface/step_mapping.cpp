@@ -1,0 +1,133 @@
+#include "interface/step_mapping.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fsi/state.hpp"
+#include "interface/body.hpp"
+
+namespace fsi::interface {
+namespace {
+
+/// C^1 step: 1 for d <= eps, 0 for d >= delta, cubic in between.
+double blend(double d, double eps, double delta) {
+  if (d <= eps) return 1.0;
+  if (d >= delta) return 0.0;
+  const double s = (d - eps) / (delta - eps);
+  return 1.0 - s * s * (3.0 - 2.0 * s);
+}
+
+/// True when patch p has the same sub-elements in both cut meshes (uncut in both,
+/// same node positions): quadrature data of one mesh then applies to the other.
+bool same_patch(const mesh::PatchMesh& mesh, const fe::CutMesh& a, const fe::CutMesh& b, int p) {
+  if (a.kind[p] != fe::PatchKind::uncut || b.kind[p] != fe::PatchKind::uncut) return false;
+  for (int n : mesh.patches[p].node)
+    if (a.x[n] != b.x[n]) return false;
+  return true;
+}
+
+Vec2 displacement(const fe::CutMesh& cut, const fe::Location& loc, const Eigen::VectorXd& s) {
+  return Vec2(fe::evaluate(cut, loc, s, kFieldsPerNode, kUx), fe::evaluate(cut, loc, s, kFieldsPerNode, kUy));
+}
+
+}  // namespace
+
+double wall_distance(const std::vector<Segment2>& walls, const Vec2& x, int* which) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const Vec2 a(walls[w].a.x, walls[w].a.y), b(walls[w].b.x, walls[w].b.y);
+    const Vec2 d = b - a;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0.0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    const double dist = (a + t * d - x).norm();
+    if (dist < best) {
+      best = dist;
+      if (which) *which = static_cast<int>(w);
+    }
+  }
+  return best;
+}
+
+MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuckets& buckets,
+                                const fe::CutMesh& next, const fe::QuadratureTable& quadrature,
+                                const Level& current, const Level& previous, const BodySpec& body,
+                                const std::vector<Segment2>& walls, const MappingOptions& options,
+                                std::vector<forms::OldValues>& old) {
+  MappingStats stats;
+  old.assign(quadrature.points.size(), forms::OldValues{});
+  const fe::CutMesh& cur = *current.cut;
+  const Eigen::VectorXd& s_cur = *current.solution;
+  const fe::CutMesh& prev = *previous.cut;
+  const Eigen::VectorXd& s_prev = *previous.solution;
+
+  for (int p = 0; p < mesh.num_patches(); ++p) {
+    const bool same = same_patch(mesh, next, cur, p);
+    const double h = mesh.patches[p].size_m;
+    for (int k = next.first_element[p]; k < next.first_element[p + 1]; ++k) {
+      const bool fluid = next.elements[k].phase == Phase::fluid;
+      for (int q = quadrature.first[k]; q < quadrature.first[k + 1]; ++q) {
+        const fe::QuadraturePoint& qp = quadrature.points[q];
+        const Vec2 x = qp.x;
+        fe::Location loc;
+        if (same) {
+          loc.element = cur.first_element[p] + (k - next.first_element[p]);
+          loc.shape = qp;
+        } else {
+          loc = fe::locate(cur, buckets, x, 1e-6);
+        }
+        forms::OldValues& o = old[q];
+        if (loc.element < 0) continue;  // outside the domain: cannot happen for interior points
+        const Vec2 u_cur = displacement(cur, loc, s_cur);
+        double g = blend(std::abs(initial_distance(body, x - u_cur)), options.eps_patches * h,
+                         options.delta_patches * h);
+        if (g > 0.0 && fluid && options.identity_gap_m > 0.0 &&
+            wall_distance(walls, x) < options.identity_gap_m)
+          g = 0.0;
+        Vec2 t = x;
+        if (g > 0.0) {
+          // (12.4): y - u_prev(y) = x - u_cur(x), Newton from y0 = x - u_cur(x) + u_prev(x).
+          ++stats.ips_points;
+          const Vec2 b = x - u_cur;
+          fe::Location lp = fe::locate(prev, buckets, x, 1e-6);
+          Vec2 y = lp.element >= 0 ? Vec2(b + displacement(prev, lp, s_prev)) : Vec2(b);
+          bool converged = false;
+          int it = 0;
+          for (; it < 10; ++it) {
+            lp = fe::locate(prev, buckets, y, 1e-6);
+            if (lp.element < 0) break;
+            const Vec2 f = y - displacement(prev, lp, s_prev) - b;
+            if (f.norm() <= 1e-12 * h) {
+              converged = true;
+              break;
+            }
+            const Vec2 gx = fe::evaluate_gradient(prev, lp, s_prev, kFieldsPerNode, kUx);
+            const Vec2 gy = fe::evaluate_gradient(prev, lp, s_prev, kFieldsPerNode, kUy);
+            // Jacobian I - grad u_prev
+            const double a00 = 1.0 - gx.x(), a01 = -gx.y(), a10 = -gy.x(), a11 = 1.0 - gy.y();
+            const double det = a00 * a11 - a01 * a10;
+            if (!(std::abs(det) > 1e-12)) break;
+            y -= Vec2((a11 * f.x() - a01 * f.y()) / det, (-a10 * f.x() + a00 * f.y()) / det);
+          }
+          stats.max_ips_iterations = std::max(stats.max_ips_iterations, it);
+          if (!converged) {
+            ++stats.ips_failures;
+            y = x;  // fall back to the identity (old values at x)
+          }
+          t = g * y + (1.0 - g) * x;
+          o.tx = (x.x() - t.x()) / options.k_s;
+          o.ty = (x.y() - t.y()) / options.k_s;
+        }
+        const fe::Location lt = (t == x) ? loc : fe::locate(cur, buckets, t, 1e-6);
+        const fe::Location& use = lt.element >= 0 ? lt : loc;
+        o.vx = fe::evaluate(cur, use, s_cur, kFieldsPerNode, kVx);
+        o.vy = fe::evaluate(cur, use, s_cur, kFieldsPerNode, kVy);
+        o.ux = fe::evaluate(cur, use, s_cur, kFieldsPerNode, kUx);
+        o.uy = fe::evaluate(cur, use, s_cur, kFieldsPerNode, kUy);
+      }
+    }
+  }
+  return stats;
+}
+
+}  // namespace fsi::interface

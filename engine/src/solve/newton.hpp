@@ -1,0 +1,60 @@
+#pragma once
+/// \file newton.hpp
+/// Newton's method with a fixed iteration budget, so that one time step has a bounded
+/// cost, and a reused LU factorization.
+///
+/// The Jacobian is exact (automatic differentiation), but factorizing it is the most
+/// expensive stage of a step (DESIGN.md: 0.1 s on 4225 nodes, 0.6 s on 16641). The
+/// factorization is therefore kept across iterations and time steps while it still
+/// contracts the residual by `reuse_contraction` per iteration; when it does not, the
+/// Jacobian is re-assembled at the current iterate and refactorized. A backtracking
+/// line search (up to 3 halvings) guards against overshooting.
+///
+/// Residual norm: max_i |R_i| / max_j |J_ij| (rows scaled by the Jacobian of the last
+/// factorization): comparable across the velocity, displacement and pressure rows.
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/fsi_system.hpp"
+#include "solve/sparse_lu.hpp"
+
+namespace fsi::solve {
+
+struct NewtonOptions {
+  int budget = 8;
+  double rel_tol = 1e-8;
+  double abs_tol = 1e-10;
+  double reuse_contraction = 0.2;
+};
+
+struct NewtonResult {
+  bool converged = false;
+  bool non_finite = false;
+  bool singular = false;
+  int iterations = 0;
+  int factorizations = 0;
+  std::vector<double> norms;  ///< scaled residual norm before each iteration and at the end
+  double assembly_seconds = 0.0, factorization_seconds = 0.0, solve_seconds = 0.0;
+};
+
+class NewtonSolver {
+ public:
+  explicit NewtonSolver(const SparseMatrix& pattern) : jacobian_(pattern) {}
+  /// Solves R(x) = 0 starting from x (updated in place).
+  NewtonResult solve(const core::FsiSystem& system, Eigen::VectorXd& x, const NewtonOptions& options);
+  /// Forget the factorization (e.g. after a restored state: keeps runs bit-identical).
+  void reset() { lu_ = std::make_unique<SparseLU>(); }
+
+ private:
+  double norm(const Eigen::VectorXd& r) const;
+  bool refactorize(const core::FsiSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd& r,
+                   NewtonResult& result);
+
+  SparseMatrix jacobian_;
+  std::unique_ptr<SparseLU> lu_ = std::make_unique<SparseLU>();
+  Eigen::VectorXd row_scale_;
+};
+
+}  // namespace fsi::solve
