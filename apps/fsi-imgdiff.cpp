@@ -13,10 +13,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <string>
-
 #include <fsi/image_compare.hpp>
 #include <fsi/png.hpp>
+#include <string>
 
 namespace {
 

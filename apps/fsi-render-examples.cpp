@@ -13,12 +13,11 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <string>
-
 #include <fsi/plot.hpp>
 #include <fsi/png.hpp>
 #include <fsi/renderer.hpp>
 #include <fsi/sample_field.hpp>
+#include <string>
 #ifdef FSI_RENDER_HAS_VIDEO
 #include <fsi/video.hpp>
 #endif
@@ -48,11 +47,11 @@ PlotSpec functionals_plot(int width, int height) {
   p.y_label = "[m]";
   p.width = width;
   p.height = height;
-  PlotSeries gap{"distance to ground", {}, {}}, w{"ball width", {}, {}},
-      h{"ball height", {}, {}};
+  PlotSeries gap{"distance to ground", {}, {}}, w{"ball width", {}, {}}, h{"ball height", {}, {}};
   for (int i = 0; i <= 400; ++i) {
     const double t = 0.005 * i;
-    const double d = std::max(0.002, 0.4 - 0.25 * t * t) + 0.01 * std::exp(-8 * (t - 1.3) * (t - 1.3)) * (t > 1.26);
+    const double d = std::max(0.002, 0.4 - 0.25 * t * t) +
+                     0.01 * std::exp(-8 * (t - 1.3) * (t - 1.3)) * (t > 1.26);
     const double squash = 0.03 * std::exp(-20 * (t - 1.3) * (t - 1.3));
     gap.x.push_back(t), gap.y.push_back(d);
     w.x.push_back(t), w.y.push_back(0.6 + squash);
@@ -127,9 +126,10 @@ int main(int argc, char** argv) {
       VideoWriter writer(out / "falling_ball.mp4", width, height);
       for (int k = 0; k < 50; ++k) {
         const double t = k / 25.0;
-        writer.write(r.render(sample_field_view({.nx = 49, .ny = 37, .graded = true, .time_s = t,
-                                                 .ball_y = 0.0 - 0.3 * t}),
-                              m));
+        writer.write(r.render(
+            sample_field_view(
+                {.nx = 49, .ny = 37, .graded = true, .time_s = t, .ball_y = 0.0 - 0.3 * t}),
+            m));
       }
       writer.close();
       std::printf("wrote %s (%ld frames, %s)\n", (out / "falling_ball.mp4").c_str(),

@@ -8,12 +8,11 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
-#include <string>
-#include <vector>
-
 #include <fsi/png.hpp>
 #include <fsi/renderer.hpp>
 #include <fsi/sample_field.hpp>
+#include <string>
+#include <vector>
 #ifdef FSI_RENDER_HAS_VIDEO
 #include <fsi/video.hpp>
 #endif
@@ -64,7 +63,12 @@ void BM_Render(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(r.render(view, spec));
   per_frame_counter(state);
 }
-BENCHMARK(BM_Render)->Arg(1)->Arg(2)->ArgName("supersample")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Render)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("supersample")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_RenderMesh(benchmark::State& state) {
   Renderer r{GlBackend::osmesa};
@@ -92,7 +96,8 @@ BENCHMARK(BM_WritePng)->Unit(benchmark::kMillisecond)->UseRealTime();
 void BM_EncodeVideo(benchmark::State& state, std::string preset) {
   Renderer r{GlBackend::osmesa};
   std::vector<Image> frames;
-  for (int i = 0; i < 10; ++i) frames.push_back(r.render(bench_view(1.0 + 0.05 * i), bench_spec(2)));
+  for (int i = 0; i < 10; ++i)
+    frames.push_back(r.render(bench_view(1.0 + 0.05 * i), bench_spec(2)));
   VideoOptions o;
   o.preset = preset;
   const auto file = scratch("movie-" + preset + ".mp4");
@@ -105,9 +110,12 @@ void BM_EncodeVideo(benchmark::State& state, std::string preset) {
   state.counters["bytes_per_frame"] = double(std::filesystem::file_size(file)) / double(n);
   per_frame_counter(state);
 }
-BENCHMARK_CAPTURE(BM_EncodeVideo, medium, std::string("medium"))->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EncodeVideo, medium, std::string("medium"))
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_EncodeVideo, veryfast, std::string("veryfast"))
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 #endif
 
 }  // namespace

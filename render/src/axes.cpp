@@ -42,32 +42,43 @@ float max_label_width(const AxisTicks& ticks, float s) {
   return w;
 }
 
-void draw_x_axis(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks,
-                 float s, bool grid) {
-  const float ch = Canvas::text_height(s), tick = 0.5f * ch, lw = std::max(1.0f, 0.5f * s);
-  std::vector<Vec2> marks, lines;
-  for (std::size_t i = 0; i < ticks.values.size(); ++i) {
-    const float x = map(ticks.values[i]);
-    marks.insert(marks.end(), {{x, area.y1}, {x, area.y1 + tick}});
-    if (grid) lines.insert(lines.end(), {{x, area.y0}, {x, area.y1}});
-    c.text(ticks.labels[i], x, area.y1 + tick + 0.5f * ch, s, ink, Align::centre, Align::start);
+void draw_grid(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks, float s,
+               bool vertical_lines) {
+  std::vector<Vec2> lines;
+  for (double v : ticks.values) {
+    const float p = map(v);
+    if (vertical_lines) {
+      lines.insert(lines.end(), {{p, area.y0}, {p, area.y1}});
+    } else {
+      lines.insert(lines.end(), {{area.x0, p}, {area.x1, p}});
+    }
   }
-  if (grid) c.segments(lines, lw, grid_ink);
-  c.segments(marks, lw, ink);
+  c.segments(lines, std::max(1.0f, 0.5f * s), grid_ink);
 }
 
-void draw_y_axis(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks,
-                 float s, bool grid) {
-  const float ch = Canvas::text_height(s), tick = 0.5f * ch, lw = std::max(1.0f, 0.5f * s);
-  std::vector<Vec2> marks, lines;
+void draw_ticks(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks, float s,
+                Side side) {
+  const float ch = Canvas::text_height(s), tick = 0.5f * ch, gap = tick + 0.5f * ch;
+  std::vector<Vec2> marks;
   for (std::size_t i = 0; i < ticks.values.size(); ++i) {
-    const float y = map(ticks.values[i]);
-    marks.insert(marks.end(), {{area.x0 - tick, y}, {area.x0, y}});
-    if (grid) lines.insert(lines.end(), {{area.x0, y}, {area.x1, y}});
-    c.text(ticks.labels[i], area.x0 - tick - 0.5f * ch, y, s, ink, Align::end, Align::centre);
+    const float p = map(ticks.values[i]);
+    const std::string& label = ticks.labels[i];
+    switch (side) {
+      case Side::bottom:
+        marks.insert(marks.end(), {{p, area.y1}, {p, area.y1 + tick}});
+        c.text(label, p, area.y1 + gap, s, ink, Align::centre, Align::start);
+        break;
+      case Side::left:
+        marks.insert(marks.end(), {{area.x0 - tick, p}, {area.x0, p}});
+        c.text(label, area.x0 - gap, p, s, ink, Align::end, Align::centre);
+        break;
+      case Side::right:
+        marks.insert(marks.end(), {{area.x1, p}, {area.x1 + tick, p}});
+        c.text(label, area.x1 + gap, p, s, ink, Align::start, Align::centre);
+        break;
+    }
   }
-  if (grid) c.segments(lines, lw, grid_ink);
-  c.segments(marks, lw, ink);
+  c.segments(marks, std::max(1.0f, 0.5f * s), ink);
 }
 
 }  // namespace fsi::render::detail

@@ -43,11 +43,14 @@ inline constexpr Rgba grid_ink{225, 225, 225, 255};
 /// Widest label [logical px].
 float max_label_width(const AxisTicks& ticks, float text_scale);
 
-/// Tick marks inwards-free (outside the frame) on the bottom edge, labels below.
-void draw_x_axis(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks,
-                 float text_scale, bool grid);
-/// Tick marks on the left edge, labels to the left.
-void draw_y_axis(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks,
-                 float text_scale, bool grid);
+/// Light grid lines across `area` at the ticks: vertical lines for an x axis.
+void draw_grid(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks,
+               float text_scale, bool vertical_lines);
+
+/// Which edge of a rectangle carries the ticks; marks point outwards, labels beyond them.
+enum class Side { bottom, left, right };
+
+void draw_ticks(Canvas& c, const Rect& area, const AxisMap& map, const AxisTicks& ticks,
+                float text_scale, Side side);
 
 }  // namespace fsi::render::detail

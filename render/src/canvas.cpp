@@ -136,7 +136,8 @@ void Canvas::segments(const std::vector<Vec2>& p, float w, Rgba c, bool round_jo
       }
     }
   }
-  // Translucent ink would show the overlaps darker; callers use opaque colours.
+  // Translucent ink shows overlaps (the joins) a little darker: fine for the faint
+  // mesh overlay, the only translucent caller.
   triangles(v, c);
 }
 

@@ -72,8 +72,8 @@ class Canvas {
   /// Text in the built-in stroke font. `scale` 1 gives 7 px tall capitals. (x, y) is
   /// the anchor; h/v say which side of the text it is on (v: start = top of capitals).
   /// vertical text reads bottom to top (for a y-axis label).
-  void text(std::string_view s, float x, float y, float scale, Rgba colour,
-            Align h = Align::start, Align v = Align::start, bool vertical = false);
+  void text(std::string_view s, float x, float y, float scale, Rgba colour, Align h = Align::start,
+            Align v = Align::start, bool vertical = false);
   /// Width of a string at `scale` [logical px].
   static float text_width(std::string_view s, float scale);
   /// Height of capitals at `scale` [logical px].

@@ -21,8 +21,8 @@ void Canvas::text(std::string_view s, float x, float y, float scale, Rgba c, Ali
   std::string copy(s);
   // The documented worst case is ~270 bytes per character.
   std::vector<char> buffer(300 * copy.size() + 1024);
-  const int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(),
-                                        int(buffer.size()));
+  const int quads =
+      stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
   const float w = text_width(s, scale), ht = text_height(scale);
   auto offset = [](Align a, float size) {
     return a == Align::start ? 0.0f : a == Align::centre ? -size / 2 : -size;

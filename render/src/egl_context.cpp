@@ -2,6 +2,7 @@
 // platform offers no EGLConfigs here, so the context is made config-less
 // (EGL_KHR_no_config_context), made current without a surface
 // (EGL_KHR_surfaceless_context) and draws into a framebuffer object we allocate.
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -59,8 +60,7 @@ class EglContext final : public RenderContext {
     const char* ext = eglQueryString(display_, EGL_EXTENSIONS);
     for (const char* needed : {"EGL_KHR_no_config_context", "EGL_KHR_surfaceless_context"}) {
       if (!has_extension(ext, needed)) {
-        throw std::runtime_error(std::string("EGL (FSI_GL_BACKEND=egl): display lacks ") +
-                                 needed);
+        throw std::runtime_error(std::string("EGL (FSI_GL_BACKEND=egl): display lacks ") + needed);
       }
     }
     if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error(egl_error("eglBindAPI(OpenGL)"));
@@ -68,16 +68,23 @@ class EglContext final : public RenderContext {
                                  EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
     context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context_ == EGL_NO_CONTEXT) throw std::runtime_error(egl_error("eglCreateContext"));
-    bind();
-    load(gen_framebuffers_, "glGenFramebuffers");
-    load(bind_framebuffer_, "glBindFramebuffer");
-    load(delete_framebuffers_, "glDeleteFramebuffers");
-    load(gen_renderbuffers_, "glGenRenderbuffers");
-    load(bind_renderbuffer_, "glBindRenderbuffer");
-    load(delete_renderbuffers_, "glDeleteRenderbuffers");
-    load(renderbuffer_storage_, "glRenderbufferStorage");
-    load(framebuffer_renderbuffer_, "glFramebufferRenderbuffer");
-    load(check_framebuffer_status_, "glCheckFramebufferStatus");
+    try {
+      bind();
+      load(gen_framebuffers_, "glGenFramebuffers");
+      load(bind_framebuffer_, "glBindFramebuffer");
+      load(delete_framebuffers_, "glDeleteFramebuffers");
+      load(gen_renderbuffers_, "glGenRenderbuffers");
+      load(bind_renderbuffer_, "glBindRenderbuffer");
+      load(delete_renderbuffers_, "glDeleteRenderbuffers");
+      load(renderbuffer_storage_, "glRenderbufferStorage");
+      load(framebuffer_renderbuffer_, "glFramebufferRenderbuffer");
+      load(check_framebuffer_status_, "glCheckFramebufferStatus");
+    } catch (...) {
+      // The destructor does not run for a half-built object: release the context here.
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display_, context_);
+      throw;
+    }
   }
 
   ~EglContext() override {

@@ -81,14 +81,7 @@ void draw_colorbar(Canvas& c, const Rect& bar, const ColorRange& range, const Ax
   const float ch = Canvas::text_height(s), lw = std::max(1.0f, 0.5f * s);
   c.colormap_rect(bar, map);
   c.stroke_rect(bar, lw, ink);
-  const AxisMap my{range.lo, range.hi, bar.y1, bar.y0};
-  std::vector<Vec2> marks;
-  for (std::size_t i = 0; i < ticks.values.size(); ++i) {
-    const float y = my(ticks.values[i]);
-    marks.insert(marks.end(), {{bar.x1, y}, {bar.x1 + 0.5f * ch, y}});
-    c.text(ticks.labels[i], bar.x1 + ch, y, s, ink, Align::start, Align::centre);
-  }
-  c.segments(marks, lw, ink);
+  draw_ticks(c, bar, AxisMap{range.lo, range.hi, bar.y1, bar.y0}, ticks, s, Side::right);
   c.text(label, bar.x0, bar.y0 - ch, s, ink, Align::start, Align::end);
 }
 
@@ -158,7 +151,8 @@ Image draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec) 
   if (spec.show_colorbar) {
     ct = make_ticks(AxisMap{range.lo, range.hi, guess_h, 0}, guess_h, y_tick_spacing(s));
     const float label_w = Canvas::text_width(info.label, s);
-    bar_band = 2.5f * ch + 2.0f * ch + std::max(1.5f * ch + max_label_width(ct, s), label_w - 2 * ch);
+    bar_band =
+        2.5f * ch + 2.0f * ch + std::max(1.5f * ch + max_label_width(ct, s), label_w - 2 * ch);
   }
   Rect avail{left, top, spec.width - right - bar_band, spec.height - bottom};
   if (avail.width() < 10 || avail.height() < 10) {
@@ -185,11 +179,11 @@ Image draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec) 
   if (spec.show_axes) {
     xt = make_ticks(mx, area.width(), x_tick_spacing(s));
     yt = make_ticks(my, area.height(), y_tick_spacing(s));
-    draw_x_axis(c, area, mx, xt, s, false);
-    draw_y_axis(c, area, my, yt, s, false);
+    draw_ticks(c, area, mx, xt, s, Side::bottom);
+    draw_ticks(c, area, my, yt, s, Side::left);
     c.text("x [m]", (area.x0 + area.x1) / 2, area.y1 + 3.0f * ch, s, ink, Align::centre);
-    c.text("y [m]", area.x0 - 2.0f * ch - max_label_width(yt, s), (area.y0 + area.y1) / 2, s,
-           ink, Align::centre, Align::end, true);
+    c.text("y [m]", area.x0 - 2.0f * ch - max_label_width(yt, s), (area.y0 + area.y1) / 2, s, ink,
+           Align::centre, Align::end, true);
   }
   if (spec.show_colorbar) {
     const Rect bar{area.x1 + 2.5f * ch, area.y0, area.x1 + 4.5f * ch, area.y1};
@@ -198,8 +192,7 @@ Image draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec) 
   }
   if (spec.show_time) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "t = %.*f s", std::clamp(spec.time_decimals, 0, 9),
-                  view.time_s);
+    std::snprintf(buf, sizeof buf, "t = %.*f s", std::clamp(spec.time_decimals, 0, 9), view.time_s);
     c.text(buf, area.x0, area.y0 - ch, s, ink, Align::start, Align::end);
   }
   if (!spec.title.empty()) {

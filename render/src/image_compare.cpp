@@ -12,8 +12,7 @@ ImageComparison compare_images(const Image& expected, const Image& actual, int t
   if (expected.width != actual.width || expected.height != actual.height) {
     throw std::invalid_argument("image sizes differ: expected " + std::to_string(expected.width) +
                                 "x" + std::to_string(expected.height) + ", actual " +
-                                std::to_string(actual.width) + "x" +
-                                std::to_string(actual.height));
+                                std::to_string(actual.width) + "x" + std::to_string(actual.height));
   }
   const std::size_t n = std::size_t(expected.width) * expected.height;
   if (expected.rgba.size() != 4 * n || actual.rgba.size() != 4 * n) {
@@ -43,9 +42,11 @@ ImageComparison compare_images(const Image& expected, const Image& actual, int t
   r.bad_fraction = n ? double(r.bad_pixels) / double(n) : 0.0;
   r.same = r.bad_fraction <= max_bad_fraction;
   char buf[200];
-  std::snprintf(buf, sizeof buf, "%s: %.3f%% of pixels differ by > %d/255 (%ld of %ld, max %d; "
-                "allowed %.3f%%)", r.same ? "same" : "differ", 100.0 * r.bad_fraction, threshold,
-                r.bad_pixels, r.total_pixels, r.max_difference, 100.0 * max_bad_fraction);
+  std::snprintf(buf, sizeof buf,
+                "%s: %.3f%% of pixels differ by > %d/255 (%ld of %ld, max %d; "
+                "allowed %.3f%%)",
+                r.same ? "same" : "differ", 100.0 * r.bad_fraction, threshold, r.bad_pixels,
+                r.total_pixels, r.max_difference, 100.0 * max_bad_fraction);
   r.verdict = buf;
   return r;
 }

@@ -15,8 +15,14 @@ class OsmesaContext final : public RenderContext {
  public:
   OsmesaContext() {
     // A compatibility profile: the drawing code uses client vertex arrays.
-    const int attributes[] = {OSMESA_FORMAT,     OSMESA_RGBA,           OSMESA_DEPTH_BITS, 0,
-                              OSMESA_STENCIL_BITS, 0, OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              0,
+                              OSMESA_STENCIL_BITS,
+                              0,
+                              OSMESA_PROFILE,
+                              OSMESA_COMPAT_PROFILE,
                               0};
     context_ = OSMesaCreateContextAttribs(attributes, nullptr);
     if (!context_) throw std::runtime_error("OSMesa: OSMesaCreateContextAttribs failed");

@@ -13,7 +13,7 @@ namespace fsi::render::detail {
 namespace {
 
 // Okabe & Ito's colour-blind-safe palette (without its yellow, too light on white).
-constexpr Rgba palette[] = {{0, 114, 178, 255},  {213, 94, 0, 255},   {0, 158, 115, 255},
+constexpr Rgba palette[] = {{0, 114, 178, 255},   {213, 94, 0, 255},  {0, 158, 115, 255},
                             {204, 121, 167, 255}, {230, 159, 0, 255}, {86, 180, 233, 255},
                             {0, 0, 0, 255}};
 
@@ -64,8 +64,8 @@ void draw_legend(Canvas& c, const PlotSpec& spec, const Rect& area, float s,
   const float bw = sample + 3.0f * ch + text_w, bh = rows * row + ch;
   Rect box;
   long fewest = -1;
-  for (const auto& [right, top] : {std::pair{true, true}, {false, true}, {true, false},
-                                   {false, false}}) {
+  for (const auto& [right, top] :
+       {std::pair{true, true}, {false, true}, {true, false}, {false, false}}) {
     const float x0 = right ? area.x1 - ch - bw : area.x0 + ch;
     const float y0 = top ? area.y0 + ch : area.y1 - ch - bh;
     const Rect candidate{x0, y0, x0 + bw, y0 + bh};
@@ -118,7 +118,8 @@ Image draw_plot(Canvas& c, const PlotSpec& spec) {
   const float s = auto_text_scale(spec.height, spec.text_scale), ch = Canvas::text_height(s);
   const float pad = 1.5f * ch;
   const float guess_h = spec.height * 0.7f;
-  const AxisTicks yt_guess = make_ticks({ly.lo, ly.hi, guess_h, 0, spec.log_y}, guess_h, y_tick_spacing(s));
+  const AxisTicks yt_guess =
+      make_ticks({ly.lo, ly.hi, guess_h, 0, spec.log_y}, guess_h, y_tick_spacing(s));
   const float left = pad + 2.0f * ch + max_label_width(yt_guess, s) + 1.5f * ch;
   const float top = pad + (spec.title.empty() ? 0.0f : 2.5f * ch);
   const float right = pad + 2.0f * ch;  // room for the last x tick label
@@ -129,12 +130,13 @@ Image draw_plot(Canvas& c, const PlotSpec& spec) {
   }
   const AxisMap mx{lx.lo, lx.hi, area.x0, area.x1};
   const AxisMap my{ly.lo, ly.hi, area.y1, area.y0, spec.log_y};
-  const AxisTicks xt = make_ticks(mx, area.width(), x_tick_spacing(s)), yt = make_ticks(my, area.height(), y_tick_spacing(s));
+  const AxisTicks xt = make_ticks(mx, area.width(), x_tick_spacing(s)),
+                  yt = make_ticks(my, area.height(), y_tick_spacing(s));
 
   // Grid first, curves over it, frame and ticks on top.
+  draw_grid(c, area, mx, xt, s, true);
+  draw_grid(c, area, my, yt, s, false);
   c.clip(area);
-  draw_x_axis(c, area, mx, xt, s, true);
-  draw_y_axis(c, area, my, yt, s, true);
   std::vector<Vec2> all_points;
   for (std::size_t k = 0; k < spec.series.size(); ++k) {
     const PlotSeries& se = spec.series[k];
@@ -154,9 +156,8 @@ Image draw_plot(Canvas& c, const PlotSpec& spec) {
     flush();
   }
   c.clear_clip();
-  // Tick labels were clipped above; draw the axes again unclipped (grid off).
-  draw_x_axis(c, area, mx, xt, s, false);
-  draw_y_axis(c, area, my, yt, s, false);
+  draw_ticks(c, area, mx, xt, s, Side::bottom);
+  draw_ticks(c, area, my, yt, s, Side::left);
   c.stroke_rect(area, std::max(1.0f, 0.6f * s), ink);
   draw_legend(c, spec, area, s, all_points);
 

@@ -68,8 +68,8 @@ FieldView sample_field_view(const SampleFieldOptions& o) {
     if (rr < r2) {
       vx = 0.0;
       vy = uy_ball;
-      pr = 400.0 * (-dy / o.radius);         // linear inside, matching the dipole at r = R
-      ux = 0.04 * dx, uy = -0.06 * dy;         // squashed vertically
+      pr = 400.0 * (-dy / o.radius);    // linear inside, matching the dipole at r = R
+      ux = 0.04 * dx, uy = -0.06 * dy;  // squashed vertically
     } else {
       const double k = r2 / rr;  // R^2 / r^2
       // grad of -(k)(U.x') with U.x' = uy_ball * dy
@@ -88,8 +88,9 @@ FieldView sample_field_view(const SampleFieldOptions& o) {
   for (int k = 0; k < o.interface_segments; ++k) {
     const double a0 = 2 * std::numbers::pi * k / o.interface_segments;
     const double a1 = 2 * std::numbers::pi * (k + 1) / o.interface_segments;
-    v.interface.push_back({{o.ball_x + o.radius * std::cos(a0), o.ball_y + o.radius * std::sin(a0)},
-                           {o.ball_x + o.radius * std::cos(a1), o.ball_y + o.radius * std::sin(a1)}});
+    v.interface.push_back(
+        {{o.ball_x + o.radius * std::cos(a0), o.ball_y + o.radius * std::sin(a0)},
+         {o.ball_x + o.radius * std::cos(a1), o.ball_y + o.radius * std::sin(a1)}});
   }
   v.walls = {{{x_min, y_min}, {x_max, y_min}},
              {{x_max, y_min}, {x_max, y_max}},

@@ -50,7 +50,7 @@ const AVCodec* find_encoder(const std::string& preferred) {
 
 struct VideoWriter::Impl {
   std::filesystem::path file;
-  int width = 0, height = 0;      // of the frames given
+  int width = 0, height = 0;  // of the frames given
   int enc_width = 0, enc_height = 0;
   AVFormatContext* format = nullptr;
   AVCodecContext* encoder = nullptr;
@@ -99,9 +99,8 @@ VideoWriter::VideoWriter(const std::filesystem::path& file, int width, int heigh
   m.enc_width = width & ~1;
   m.enc_height = height & ~1;
   if (m.enc_width < 2 || m.enc_height < 2 || options.fps <= 0) {
-    throw std::invalid_argument(file.string() + ": bad video size " + std::to_string(width) +
-                                "x" + std::to_string(height) + " or fps " +
-                                std::to_string(options.fps));
+    throw std::invalid_argument(file.string() + ": bad video size " + std::to_string(width) + "x" +
+                                std::to_string(height) + " or fps " + std::to_string(options.fps));
   }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   check(avformat_alloc_output_context2(&m.format, nullptr, "mp4", file.c_str()), file,

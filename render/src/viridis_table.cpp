@@ -6,6 +6,7 @@ namespace fsi::render::detail {
 
 const ColormapTable& viridis_table() {
   // A function-local constant: immutable data, no mutable global state.
+  // clang-format off
   static const ColormapTable table{{
     {68, 1, 84}, {68, 2, 86}, {69, 4, 87}, {69, 5, 89}, {70, 7, 90}, {70, 8, 92},
     {70, 10, 93}, {70, 11, 94}, {71, 13, 96}, {71, 14, 97}, {71, 16, 99}, {71, 17, 100},
@@ -51,6 +52,7 @@ const ColormapTable& viridis_table() {
     {231, 228, 25}, {234, 229, 26}, {236, 229, 27}, {239, 229, 28}, {241, 229, 29}, {244, 230, 30},
     {246, 230, 32}, {248, 230, 33}, {251, 231, 35}, {253, 231, 37},
   }};
+  // clang-format on
   return table;
 }
 

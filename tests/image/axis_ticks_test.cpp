@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <fsi/axis_ticks.hpp>
 
 namespace fsi::render {

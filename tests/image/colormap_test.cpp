@@ -9,9 +9,9 @@ double luminance(Rgb8 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 TEST(Colormap, ViridisEndsAndMiddle) {
   const ColormapTable t = colormap_table(Colormap::viridis);
-  EXPECT_EQ(t.front(), (Rgb8{68, 1, 84}));      // dark violet
-  EXPECT_EQ(t.back(), (Rgb8{253, 231, 37}));    // yellow
-  EXPECT_EQ(t[128], (Rgb8{33, 145, 140}));      // teal
+  EXPECT_EQ(t.front(), (Rgb8{68, 1, 84}));    // dark violet
+  EXPECT_EQ(t.back(), (Rgb8{253, 231, 37}));  // yellow
+  EXPECT_EQ(t[128], (Rgb8{33, 145, 140}));    // teal
 }
 
 TEST(Colormap, ViridisLightnessIncreases) {
@@ -25,8 +25,8 @@ TEST(Colormap, ViridisLightnessIncreases) {
 
 TEST(Colormap, CoolWarmIsDivergingThroughGrey) {
   const ColormapTable t = colormap_table(Colormap::cool_warm);
-  EXPECT_EQ(t.front(), (Rgb8{59, 76, 192}));   // Moreland's blue end
-  EXPECT_EQ(t.back(), (Rgb8{180, 4, 38}));     // Moreland's red end
+  EXPECT_EQ(t.front(), (Rgb8{59, 76, 192}));  // Moreland's blue end
+  EXPECT_EQ(t.back(), (Rgb8{180, 4, 38}));    // Moreland's red end
   // The centre is a light neutral grey (Moreland: 221, 221, 221).
   const Rgb8 mid = colormap_color(Colormap::cool_warm, 0.5);
   EXPECT_NEAR(mid.r, 221, 4);
@@ -38,8 +38,8 @@ TEST(Colormap, CoolWarmIsDivergingThroughGrey) {
     EXPECT_GE(luminance(t[colormap_size - 1 - i]) + 0.5, luminance(t[colormap_size - i]))
         << "entry " << colormap_size - 1 - i;
   }
-  EXPECT_TRUE(t[40].b > t[40].r);   // cool side is blue
-  EXPECT_TRUE(t[215].r > t[215].b); // warm side is red
+  EXPECT_TRUE(t[40].b > t[40].r);    // cool side is blue
+  EXPECT_TRUE(t[215].r > t[215].b);  // warm side is red
   EXPECT_TRUE(is_diverging(Colormap::cool_warm));
   EXPECT_FALSE(is_diverging(Colormap::viridis));
 }

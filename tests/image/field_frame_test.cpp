@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <fsi/colormap.hpp>
 #include <fsi/renderer.hpp>
 #include <fsi/sample_field.hpp>
@@ -28,7 +27,8 @@ class FieldFrame : public ::testing::Test {
 };
 
 TEST_F(FieldFrame, SignedVelocityWithContourGolden) {
-  testing::expect_matches_golden("field_vy_contour", renderer.render(view, small_frame(Quantity::vy)));
+  testing::expect_matches_golden("field_vy_contour",
+                                 renderer.render(view, small_frame(Quantity::vy)));
 }
 
 TEST_F(FieldFrame, MagnitudeViridisWithMeshGolden) {
@@ -88,7 +88,8 @@ TEST_F(FieldFrame, ColoursAreMappedPerPixel) {
   int x0 = -1, x1 = -1;
   for (int x = 0; x < im.width; ++x) {
     const std::uint8_t* p = &im.rgba[im.offset(x, y)];
-    const bool ink = !(p[0] > 250 && p[1] > 250 && p[2] > 250) && !(p[0] < 40 && p[1] < 40 && p[2] < 40);
+    const bool ink =
+        !(p[0] > 250 && p[1] > 250 && p[2] > 250) && !(p[0] < 40 && p[1] < 40 && p[2] < 40);
     if (ink && x0 < 0) x0 = x;
     if (ink) x1 = x;
   }
@@ -99,7 +100,8 @@ TEST_F(FieldFrame, ColoursAreMappedPerPixel) {
     const double t = (x + 0.5 - x0) / double(x1 - x0 + 1);  // 0..1 across the area
     const Rgb8 want = colormap_color(Colormap::cool_warm, t);
     const std::uint8_t* p = &im.rgba[im.offset(x, y)];
-    worst = std::max({worst, std::abs(p[0] - want.r), std::abs(p[1] - want.g), std::abs(p[2] - want.b)});
+    worst = std::max(
+        {worst, std::abs(p[0] - want.r), std::abs(p[1] - want.g), std::abs(p[2] - want.b)});
   }
   EXPECT_LE(worst, 6) << "pixel colours do not follow the colour map of the interpolated value";
 }

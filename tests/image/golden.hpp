@@ -12,14 +12,13 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <string>
-
 #include <fsi/image_compare.hpp>
 #include <fsi/png.hpp>
+#include <string>
 
 namespace fsi::render::testing {
 
-inline constexpr int golden_threshold = 8;           // per channel, of 255
+inline constexpr int golden_threshold = 8;  // per channel, of 255
 inline constexpr double golden_max_bad_fraction = 0.005;
 
 inline std::filesystem::path golden_path(const std::string& name) {
@@ -45,7 +44,8 @@ inline void expect_matches_golden(const std::string& name, const Image& actual) 
   }
   if (!std::filesystem::exists(golden)) {
     write_png(output_dir() / (name + ".actual.png"), actual);
-    ADD_FAILURE() << "no golden " << golden << "; create it with FSI_UPDATE_GOLDENS=1 ctest -L image";
+    ADD_FAILURE() << "no golden " << golden
+                  << "; create it with FSI_UPDATE_GOLDENS=1 ctest -L image";
     return;
   }
   const Image expected = read_png(golden);

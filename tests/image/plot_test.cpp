@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <fsi/plot.hpp>
 #include <fsi/renderer.hpp>
 

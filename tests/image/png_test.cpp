@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-
 #include <fsi/png.hpp>
 
 namespace fsi::render {
@@ -13,9 +12,9 @@ std::filesystem::path scratch(const std::string& name) {
 
 TEST(Png, RoundTripKeepsEveryByteAndTheOrientation) {
   Image im = Image::filled(7, 5, 10, 20, 30, 255);
-  im.rgba[im.offset(0, 0)] = 255;                 // top-left red
-  im.rgba[im.offset(6, 4) + 2] = 200;             // bottom-right bluish
-  im.rgba[im.offset(3, 2) + 3] = 128;             // half transparent
+  im.rgba[im.offset(0, 0)] = 255;      // top-left red
+  im.rgba[im.offset(6, 4) + 2] = 200;  // bottom-right bluish
+  im.rgba[im.offset(3, 2) + 3] = 128;  // half transparent
   const auto file = scratch("roundtrip.png");
   write_png(file, im);
   const Image back = read_png(file);

@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-
 #include <fsi/image_compare.hpp>
 #include <fsi/render_context.hpp>
 #include <fsi/renderer.hpp>

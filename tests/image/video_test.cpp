@@ -3,7 +3,6 @@
 
 #ifdef FSI_RENDER_HAS_VIDEO
 #include <filesystem>
-
 #include <fsi/renderer.hpp>
 #include <fsi/sample_field.hpp>
 #include <fsi/video.hpp>

@@ -2,10 +2,9 @@
 /// \file field_quantity.hpp
 /// The scalar quantities a frame can show, with their names, units and colour maps, and
 /// their nodal values taken from a FieldView.
+#include <fsi/field_view.hpp>
 #include <string_view>
 #include <vector>
-
-#include <fsi/field_view.hpp>
 
 #include "fsi/colormap.hpp"
 

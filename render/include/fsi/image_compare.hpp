@@ -10,11 +10,11 @@
 namespace fsi::render {
 
 struct ImageComparison {
-  long bad_pixels = 0;       ///< pixels where some channel differs by more than the threshold
+  long bad_pixels = 0;  ///< pixels where some channel differs by more than the threshold
   long total_pixels = 0;
-  double bad_fraction = 0;   ///< bad_pixels / total_pixels, in [0, 1]
-  int max_difference = 0;    ///< largest per-channel difference seen [0, 255]
-  bool same = false;         ///< bad_fraction <= max_bad_fraction
+  double bad_fraction = 0;  ///< bad_pixels / total_pixels, in [0, 1]
+  int max_difference = 0;   ///< largest per-channel difference seen [0, 255]
+  bool same = false;        ///< bad_fraction <= max_bad_fraction
   /// The expected image faded to light grey, with bad pixels in red (brighter = larger
   /// difference): where to look.
   Image diff;

@@ -24,11 +24,11 @@ struct PlotSpec {
   std::vector<PlotSeries> series;  ///< coloured in turn from a colour-blind-safe palette
   bool log_y = false;              ///< logarithmic y axis (decade ticks)
   std::optional<double> x_min, x_max, y_min, y_max;  ///< fixed limits; unset = data range
-  int width = 960;                 ///< [px]
-  int height = 600;                ///< [px]
-  double text_scale = 0;           ///< 0 = automatic from the height
-  double line_width = 2.0;         ///< [px]
-  int supersample = 2;             ///< 1..4
+  int width = 960;                                   ///< [px]
+  int height = 600;                                  ///< [px]
+  double text_scale = 0;                             ///< 0 = automatic from the height
+  double line_width = 2.0;                           ///< [px]
+  int supersample = 2;                               ///< 1..4
 };
 
 /// Draws a plot with a temporary renderer (FSI_GL_BACKEND selects the backend); use

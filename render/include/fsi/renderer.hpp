@@ -7,11 +7,10 @@
 /// One Renderer owns one offscreen GL context (OSMesa by default, EGL with
 /// FSI_GL_BACKEND=egl); use one per thread. Reusing a Renderer across the frames of a
 /// movie avoids re-creating the context.
+#include <fsi/field_view.hpp>
 #include <memory>
 #include <optional>
 #include <string>
-
-#include <fsi/field_view.hpp>
 
 #include "fsi/field_quantity.hpp"
 #include "fsi/image.hpp"
@@ -28,8 +27,8 @@ struct ViewWindow {
 
 /// What one frame shows. Defaults give a 1280x720 |v| picture of the whole domain.
 struct FrameSpec {
-  int width = 1280;   ///< [px]
-  int height = 720;   ///< [px]
+  int width = 1280;  ///< [px]
+  int height = 720;  ///< [px]
   Quantity quantity = Quantity::vmag;
   /// Fixed colour range (in the quantity's unit); unset = auto_range() of this frame.
   /// Fix it for a movie, or the colours flicker from frame to frame.
@@ -39,14 +38,14 @@ struct FrameSpec {
   /// true: one metre is as long in x as in y (letterboxed); false: stretch the window to
   /// fill the plot area (useful for thin contact gaps, e.g. 1e-3 m high).
   bool keep_aspect = true;
-  bool show_mesh = false;       ///< thin grey sub-element edges
-  bool show_interface = true;   ///< thick black interface contour
-  bool show_walls = true;       ///< thick dark grey walls
+  bool show_mesh = false;      ///< thin grey sub-element edges
+  bool show_interface = true;  ///< thick black interface contour
+  bool show_walls = true;      ///< thick dark grey walls
   bool show_colorbar = true;
-  bool show_axes = true;        ///< ticks and labels in metres on the frame
-  bool show_time = true;        ///< "t = 1.234 s" top left
-  int time_decimals = 3;        ///< digits after the point of the time stamp
-  std::string title;            ///< top centre; empty = none
+  bool show_axes = true;  ///< ticks and labels in metres on the frame
+  bool show_time = true;  ///< "t = 1.234 s" top left
+  int time_decimals = 3;  ///< digits after the point of the time stamp
+  std::string title;      ///< top centre; empty = none
   /// Text size factor; 0 = automatic from the picture height (legible at any size).
   double text_scale = 0;
   /// Supersampling factor per direction (1..4): 2 antialiases lines, text and edges.

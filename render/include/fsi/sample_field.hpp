@@ -11,14 +11,14 @@
 namespace fsi::render {
 
 struct SampleFieldOptions {
-  int nx = 33;            ///< nodes in x (>= 2)
-  int ny = 25;            ///< nodes in y (>= 2)
-  bool graded = false;    ///< refine towards the bottom wall and the centre line
+  int nx = 33;          ///< nodes in x (>= 2)
+  int ny = 25;          ///< nodes in y (>= 2)
+  bool graded = false;  ///< refine towards the bottom wall and the centre line
   int interface_segments = 96;
-  double time_s = 1.234;  ///< time stamp [s]
+  double time_s = 1.234;                ///< time stamp [s]
   double ball_x = 0.1, ball_y = -0.35;  ///< ball centre [m]
-  double radius = 0.3;    ///< [m]
-  double speed = 0.2;     ///< falling speed [m/s]
+  double radius = 0.3;                  ///< [m]
+  double speed = 0.2;                   ///< falling speed [m/s]
 };
 
 FieldView sample_field_view(const SampleFieldOptions& options = {});

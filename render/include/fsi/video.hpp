@@ -11,7 +11,7 @@
 namespace fsi::render {
 
 struct VideoOptions {
-  int fps = 25;                   ///< frames per second [1/s]
+  int fps = 25;  ///< frames per second [1/s]
   /// libx264 constant rate factor: 0 lossless .. 51 worst; 18 is visually lossless for
   /// these flat-shaded pictures, 23 is x264's default.
   int crf = 18;
@@ -40,8 +40,8 @@ class VideoWriter {
   void close();
 
   long frames_written() const;
-  int encoded_width() const;   ///< [px], even
-  int encoded_height() const;  ///< [px], even
+  int encoded_width() const;         ///< [px], even
+  int encoded_height() const;        ///< [px], even
   std::string encoder_name() const;  ///< e.g. "libx264"
 
  private:
@@ -51,11 +51,11 @@ class VideoWriter {
 
 /// What a decoder finds in a video file (used by tests and tools to check outputs).
 struct VideoInfo {
-  long frames = 0;         ///< decoded frames (every packet decoded, not a header guess)
+  long frames = 0;            ///< decoded frames (every packet decoded, not a header guess)
   int width = 0, height = 0;  ///< [px]
-  std::string codec;       ///< codec name, e.g. "h264"
-  std::string container;   ///< e.g. "mov,mp4,m4a,3gp,3g2,mj2"
-  double fps = 0;          ///< nominal frame rate [1/s]
+  std::string codec;          ///< codec name, e.g. "h264"
+  std::string container;      ///< e.g. "mov,mp4,m4a,3gp,3g2,mj2"
+  double fps = 0;             ///< nominal frame rate [1/s]
 };
 
 /// Opens and fully decodes the first video stream. Throws std::runtime_error naming
