@@ -190,14 +190,18 @@ Image draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec) 
     ct = make_ticks(AxisMap{range.lo, range.hi, bar.y1, bar.y0}, bar.height(), y_tick_spacing(s));
     draw_colorbar(c, bar, range, ct, info.colormap, info.label, s);
   }
+  float time_right = area.x0;  // where the time stamp ends
   if (spec.show_time) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "t = %.*f s", std::clamp(spec.time_decimals, 0, 9), view.time_s);
     c.text(buf, area.x0, area.y0 - ch, s, ink, Align::start, Align::end);
+    time_right = area.x0 + Canvas::text_width(buf, s);
   }
   if (!spec.title.empty()) {
-    const float ts = s + 0.5f;
-    c.text(spec.title, (area.x0 + area.x1) / 2, area.y0 - ch, ts, ink, Align::centre, Align::end);
+    // Centred over the plot area, unless that would run into the time stamp.
+    const float ts = s + 0.5f, tw = Canvas::text_width(spec.title, ts);
+    const float x = std::max((area.x0 + area.x1 - tw) / 2, time_right + 2.0f * ch);
+    c.text(spec.title, x, area.y0 - ch, ts, ink, Align::start, Align::end);
   }
   return c.finish();
 }
