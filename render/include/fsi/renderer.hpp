@@ -1,0 +1,78 @@
+#pragma once
+/// \file renderer.hpp
+/// Turns a FieldView into a picture: a scalar field coloured per pixel, the interface as
+/// a thick black contour, walls, an optional mesh overlay, axes in metres, a colour bar
+/// with unit and a time stamp. Also draws plots (see plot.hpp) with the same machinery.
+///
+/// One Renderer owns one offscreen GL context (OSMesa by default, EGL with
+/// FSI_GL_BACKEND=egl); use one per thread. Reusing a Renderer across the frames of a
+/// movie avoids re-creating the context.
+#include <fsi/field_view.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "fsi/field_quantity.hpp"
+#include "fsi/image.hpp"
+#include "fsi/render_context.hpp"
+
+namespace fsi::render {
+
+struct PlotSpec;  // plot.hpp
+
+/// A rectangle of the domain [m].
+struct ViewWindow {
+  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;  ///< [m], x0 < x1, y0 < y1
+};
+
+/// What one frame shows. Defaults give a 1280x720 |v| picture of the whole domain.
+struct FrameSpec {
+  int width = 1280;  ///< [px]
+  int height = 720;  ///< [px]
+  Quantity quantity = Quantity::vmag;
+  /// Fixed colour range (in the quantity's unit); unset = auto_range() of this frame.
+  /// Fix it for a movie, or the colours flicker from frame to frame.
+  std::optional<ColorRange> range;
+  /// Zoom window [m]; unset = the domain's bounding box.
+  std::optional<ViewWindow> window;
+  /// true: one metre is as long in x as in y (letterboxed); false: stretch the window to
+  /// fill the plot area (useful for thin contact gaps, e.g. 1e-3 m high).
+  bool keep_aspect = true;
+  bool show_mesh = false;      ///< thin grey sub-element edges
+  bool show_interface = true;  ///< thick black interface contour
+  bool show_walls = true;      ///< thick dark grey walls
+  bool show_colorbar = true;
+  bool show_axes = true;  ///< ticks and labels in metres on the frame
+  bool show_time = true;  ///< "t = 1.234 s" top left
+  int time_decimals = 3;  ///< digits after the point of the time stamp
+  std::string title;      ///< top centre; empty = none
+  /// Text size factor; 0 = automatic from the picture height (legible at any size).
+  double text_scale = 0;
+  /// Supersampling factor per direction (1..4): 2 antialiases lines, text and edges.
+  int supersample = 2;
+};
+
+class Renderer {
+ public:
+  /// Opens a context of the backend chosen by FSI_GL_BACKEND (osmesa default).
+  Renderer();
+  explicit Renderer(GlBackend backend);
+  ~Renderer();
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
+
+  /// Draws one frame. Throws std::invalid_argument when `view` is inconsistent (field
+  /// sizes differ from the node count, indices out of range) or the spec is unusable.
+  Image render(const FieldView& view, const FrameSpec& spec);
+
+  /// Draws a plot of functionals over time (see plot.hpp).
+  Image plot(const PlotSpec& spec);
+
+  GlBackend backend() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fsi::render

@@ -1,0 +1,145 @@
+// Golden pictures of field frames (320x240, small enough to check in), and properties
+// of the colouring that must hold whatever the goldens say.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fsi/colormap.hpp>
+#include <fsi/renderer.hpp>
+#include <fsi/sample_field.hpp>
+
+#include "image/golden.hpp"
+
+namespace fsi::render {
+namespace {
+
+FrameSpec small_frame(Quantity q) {
+  FrameSpec s;
+  s.width = 320;
+  s.height = 240;
+  s.quantity = q;
+  return s;
+}
+
+class FieldFrame : public ::testing::Test {
+ protected:
+  Renderer renderer{GlBackend::osmesa};
+  FieldView view = sample_field_view();
+};
+
+TEST_F(FieldFrame, SignedVelocityWithContourGolden) {
+  testing::expect_matches_golden("field_vy_contour",
+                                 renderer.render(view, small_frame(Quantity::vy)));
+}
+
+TEST_F(FieldFrame, MagnitudeViridisWithMeshGolden) {
+  FrameSpec s = small_frame(Quantity::vmag);
+  s.show_mesh = true;
+  testing::expect_matches_golden("field_vmag_mesh", renderer.render(view, s));
+}
+
+TEST_F(FieldFrame, PressureFixedRangeTitleGolden) {
+  FrameSpec s = small_frame(Quantity::p);
+  s.range = ColorRange{-500, 500};
+  s.title = "pressure";
+  testing::expect_matches_golden("field_p_fixed_range", renderer.render(view, s));
+}
+
+TEST_F(FieldFrame, ZoomedStretchedDisplacementGolden) {
+  FrameSpec s = small_frame(Quantity::umag);
+  s.window = ViewWindow{-0.3, -0.75, 0.5, -0.6};  // the gap under the ball
+  s.keep_aspect = false;
+  s.show_mesh = true;
+  testing::expect_matches_golden("field_umag_zoom_stretched", renderer.render(view, s));
+}
+
+TEST_F(FieldFrame, ColorBarAloneGolden) {
+  // No axes, no time stamp: the colour bar (fixed range, its ticks and label) and the
+  // field fill the picture.
+  FrameSpec s = small_frame(Quantity::vx);
+  s.range = ColorRange{-0.25, 0.25};
+  s.show_axes = false;
+  s.show_time = false;
+  testing::expect_matches_golden("colorbar_cool_warm", renderer.render(view, s));
+}
+
+// The scalar is interpolated before the colour lookup: along a linear field every pixel
+// has the colour of its own value. Interpolating colours instead would fail this (the
+// viridis table is not linear in RGB between the two end nodes).
+TEST_F(FieldFrame, ColoursAreMappedPerPixel) {
+  FieldView v;
+  v.nodes = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  v.triangles = {{0, 1, 2}, {0, 2, 3}};
+  v.vx = {0, 1, 1, 0};  // vx = x
+  v.vy = {0, 0, 0, 0};
+  v.domain_min = {0, 0};
+  v.domain_max = {1, 1};
+  FrameSpec s;
+  s.width = 300;
+  s.height = 200;
+  s.quantity = Quantity::vx;
+  s.range = ColorRange{0, 1};
+  s.window = ViewWindow{0, 0, 1, 1};
+  s.keep_aspect = false;
+  s.show_axes = s.show_colorbar = s.show_time = s.show_interface = s.show_walls = false;
+  s.supersample = 1;
+  const Image im = renderer.render(v, s);
+  // Find the plot area: the run of non-white, non-frame pixels along the middle row.
+  const int y = im.height / 2;
+  int x0 = -1, x1 = -1;
+  for (int x = 0; x < im.width; ++x) {
+    const std::uint8_t* p = &im.rgba[im.offset(x, y)];
+    const bool ink =
+        !(p[0] > 250 && p[1] > 250 && p[2] > 250) && !(p[0] < 40 && p[1] < 40 && p[2] < 40);
+    if (ink && x0 < 0) x0 = x;
+    if (ink) x1 = x;
+  }
+  ASSERT_GT(x1 - x0, 100);
+  // vx = x is cool-warm from blue (-1 side, not reached) to red; sample inner pixels.
+  int worst = 0;
+  for (int x = x0 + 3; x <= x1 - 3; x += 5) {
+    const double t = (x + 0.5 - x0) / double(x1 - x0 + 1);  // 0..1 across the area
+    const Rgb8 want = colormap_color(Colormap::cool_warm, t);
+    const std::uint8_t* p = &im.rgba[im.offset(x, y)];
+    worst = std::max(
+        {worst, std::abs(p[0] - want.r), std::abs(p[1] - want.g), std::abs(p[2] - want.b)});
+  }
+  EXPECT_LE(worst, 6) << "pixel colours do not follow the colour map of the interpolated value";
+}
+
+TEST_F(FieldFrame, FixedRangeGivesSameColoursForSameValues) {
+  // A movie fixes the range: the same value must keep its colour whatever the frame's
+  // own extremes are.
+  FrameSpec s = small_frame(Quantity::vy);
+  s.range = ColorRange{-1, 1};
+  FieldView doubled = view;
+  doubled.vx[0] = 50;  // an outlier far away changes the auto range, not a fixed one
+  const Image a = renderer.render(view, s), b = renderer.render(doubled, s);
+  EXPECT_TRUE(compare_images(a, b, 0, 0.0).same);
+}
+
+TEST_F(FieldFrame, RejectsInconsistentViews) {
+  FieldView bad = view;
+  bad.vx.pop_back();
+  EXPECT_THROW(renderer.render(bad, small_frame(Quantity::vx)), std::invalid_argument);
+  bad = view;
+  bad.triangles.push_back({0, 1, int(view.nodes.size())});
+  EXPECT_THROW(renderer.render(bad, small_frame(Quantity::vx)), std::invalid_argument);
+  FrameSpec s = small_frame(Quantity::vx);
+  s.window = ViewWindow{1, 0, 0, 1};
+  EXPECT_THROW(renderer.render(view, s), std::invalid_argument);
+}
+
+TEST_F(FieldFrame, OutputHasRequestedSizeAndIsOpaque) {
+  FrameSpec s = small_frame(Quantity::vmag);
+  s.width = 333;
+  s.height = 201;
+  const Image im = renderer.render(view, s);
+  ASSERT_EQ(im.width, 333);
+  ASSERT_EQ(im.height, 201);
+  // Top-left corner is background white: the picture is not upside down or black.
+  EXPECT_EQ(im.rgba[0], 255);
+  EXPECT_EQ(im.rgba[3], 255);
+}
+
+}  // namespace
+}  // namespace fsi::render
