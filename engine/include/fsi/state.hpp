@@ -3,6 +3,7 @@
 /// What changes while a simulation runs (MuJoCo's mjData to Scenario's mjModel).
 /// Restoring a State and stepping on gives bit-identical results.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@ struct Functionals {
   double mass_error = 0.0;       ///< j_mass = |pi r^2 rho0 - int_S J rho0| / (pi r^2 rho0)
 };
 
+struct FactorizationOrigin;
+
 struct State {
   double time_s = 0.0;
   long step = 0;
@@ -45,6 +48,20 @@ struct State {
   std::vector<double> edge_cut, previous_edge_cut;
 
   Functionals functionals;
+
+  /// Where the LU factorization that Newton currently reuses was computed (the solver
+  /// keeps one factorization across iterations and time steps while it contracts well).
+  /// Part of the state so that a restored run rebuilds exactly that factorization and
+  /// continues bit-identically. Null before the first step.
+  std::shared_ptr<const FactorizationOrigin> factorization_origin;
+};
+
+/// The data that determines a factorized Jacobian: the state at the start of the step
+/// it belongs to (without an origin of its own), the Newton iterate and the time step.
+struct FactorizationOrigin {
+  State step_start;
+  Eigen::VectorXd iterate;
+  double time_step_s = 0.0;
 };
 
 }  // namespace fsi

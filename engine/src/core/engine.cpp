@@ -81,6 +81,35 @@ struct Engine::Impl {
     after_state_change();
   }
 
+  /// Rebuilds the factorization a saved state refers to: the geometry and old values of
+  /// the step it was computed in, and the Jacobian at the saved iterate.
+  void restore_factorization() {
+    newton.reset();
+    const std::shared_ptr<const FactorizationOrigin> origin = state.factorization_origin;
+    if (!origin) return;
+    const State& s0 = origin->step_start;
+    const fe::CutMesh cur = fe::build_cut_mesh(mesh, fe::CutData{s0.corner_sign, s0.edge_cut});
+    const fe::CutMesh prev = fe::build_cut_mesh(mesh, fe::CutData{s0.previous_corner_sign, s0.previous_edge_cut});
+    const fe::CutMesh next = fe::build_cut_mesh(
+        mesh, fe::cut_data(mesh, interface::ips_level_set(scenario.body, cur, buckets, s0.solution)));
+    const fe::QuadratureTable quad = fe::build_quadrature(next);
+    system.set_geometry(next, quad, origin->time_step_s);
+    std::vector<forms::OldValues> old;
+    interface::compute_old_values(mesh, buckets, next, quad, {&cur, &s0.solution}, {&prev, &s0.previous_solution},
+                                  scenario.body, scenario.walls, mapping_options(origin->time_step_s), old);
+    system.set_old_values(std::move(old));
+    newton.factorize_at(system, origin->iterate);
+  }
+
+  interface::MappingOptions mapping_options(double k) const {
+    interface::MappingOptions mo;
+    mo.k_s = k;
+    mo.eps_patches = numerics.blend_eps_patches;
+    mo.delta_patches = numerics.blend_delta_patches;
+    mo.identity_gap_m = numerics.identity_gap_m;
+    return mo;
+  }
+
   void after_state_change() {
     quad_cur = fe::build_quadrature(cut_cur);
     data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution));
@@ -96,11 +125,7 @@ struct Engine::Impl {
     report.geometry_seconds += seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();
-    interface::MappingOptions mo;
-    mo.k_s = k;
-    mo.eps_patches = numerics.blend_eps_patches;
-    mo.delta_patches = numerics.blend_delta_patches;
-    mo.identity_gap_m = numerics.identity_gap_m;
+    const interface::MappingOptions mo = mapping_options(k);
     std::vector<forms::OldValues> old;
     const interface::MappingStats ms = interface::compute_old_values(
         mesh, buckets, cut_next, quad, {&cut_cur, &state.solution}, {&cut_prev, &state.previous_solution},
@@ -112,13 +137,22 @@ struct Engine::Impl {
     }
 
     x = state.solution;
-    newton.reset();  // a step never depends on an earlier step's factorization: restorable
     solve::NewtonOptions no;
     no.budget = numerics.newton_budget;
     no.rel_tol = numerics.newton_rel_tol;
     no.abs_tol = numerics.newton_abs_tol;
     no.reuse_contraction = numerics.reuse_contraction;
     solve::NewtonResult r = newton.solve(system, x, no);
+    if (r.factorization_point.size() > 0) {
+      // Remember what determines the factorization now held, so a restored state can
+      // rebuild it exactly (bit-identical continuation, see FactorizationOrigin).
+      auto origin = std::make_shared<FactorizationOrigin>();
+      origin->step_start = state;
+      origin->step_start.factorization_origin.reset();
+      origin->iterate = std::move(r.factorization_point);
+      origin->time_step_s = k;
+      state.factorization_origin = std::move(origin);
+    }
     report.newton_iterations += r.iterations;
     report.factorizations += r.factorizations;
     report.residual_norms.insert(report.residual_norms.end(), r.norms.begin(), r.norms.end());
@@ -231,6 +265,7 @@ void Engine::set_state(const State& state) {
   if (!state.solution.allFinite() || !state.previous_solution.allFinite())
     throw InputError("<state>", "/solution", "contains non-finite values");
   impl_->state = state;
+  impl_->restore_factorization();
   impl_->rebuild_from_state();
 }
 

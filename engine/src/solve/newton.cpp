@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace fsi::solve {
 namespace {
@@ -35,8 +37,15 @@ bool NewtonSolver::refactorize(const core::FsiSystem& system, const Eigen::Vecto
   const bool ok = lu_->factorize(jacobian_);
   result.factorization_seconds += seconds_since(t0);
   ++result.factorizations;
+  result.factorization_point = x;
   if (!ok) result.singular = true;
   return ok;
+}
+
+bool NewtonSolver::factorize_at(const core::FsiSystem& system, const Eigen::VectorXd& x) {
+  NewtonResult ignored;
+  Eigen::VectorXd r;
+  return refactorize(system, x, r, ignored);
 }
 
 NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd& x,
@@ -53,6 +62,11 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     result.assembly_seconds += seconds_since(t0);
   }
   double current = norm(r);
+  if (std::getenv("FSI_DEBUG") && current > 1.0) {
+    Eigen::Index i;
+    r.cwiseProduct(row_scale_).cwiseAbs().maxCoeff(&i);
+    std::fprintf(stderr, "DEBUG max scaled residual %g at dof %ld (node %ld field %ld) r=%g scale=%g\n", current, (long)i, (long)i / 5, (long)i % 5, r[i], row_scale_[i]);
+  }
   result.norms.push_back(current);
   if (!std::isfinite(current)) {
     result.non_finite = true;

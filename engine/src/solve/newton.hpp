@@ -37,6 +37,8 @@ struct NewtonResult {
   int factorizations = 0;
   std::vector<double> norms;  ///< scaled residual norm before each iteration and at the end
   double assembly_seconds = 0.0, factorization_seconds = 0.0, solve_seconds = 0.0;
+  /// The iterate of the last factorization of this call (empty: none happened).
+  Eigen::VectorXd factorization_point;
 };
 
 class NewtonSolver {
@@ -44,8 +46,11 @@ class NewtonSolver {
   explicit NewtonSolver(const SparseMatrix& pattern) : jacobian_(pattern) {}
   /// Solves R(x) = 0 starting from x (updated in place).
   NewtonResult solve(const core::FsiSystem& system, Eigen::VectorXd& x, const NewtonOptions& options);
-  /// Forget the factorization (e.g. after a restored state: keeps runs bit-identical).
+  /// Forget the factorization.
   void reset() { lu_ = std::make_unique<SparseLU>(); }
+  /// Assembles the Jacobian at x and factorizes it (used to restore a saved state's
+  /// factorization exactly). Returns false if it is singular or not finite.
+  bool factorize_at(const core::FsiSystem& system, const Eigen::VectorXd& x);
 
  private:
   double norm(const Eigen::VectorXd& r) const;
