@@ -28,6 +28,12 @@ Vec2 grad_pressure(const Vec2& x) {
 }
 /// -Laplace(v) = 2 pi^2 v for this v.
 Vec2 force(const Vec2& x) { return 2.0 * kPi * kPi * velocity(x) + grad_pressure(x); }
+/// Do-nothing data on the outflow x = 1 (normal (1, 0)): g = dv/dn - p n.
+Vec2 outflow_traction(const Vec2& x) {
+  return {kPi * std::cos(kPi * x.x()) * std::cos(kPi * x.y()) - pressure(x),
+          kPi * std::sin(kPi * x.x()) * std::sin(kPi * x.y())};
+}
+bool on_outflow(const Vec2& x) { return std::abs(x.x() - 1.0) < 1e-12; }
 
 }  // namespace
 
@@ -64,24 +70,43 @@ StokesResult solve_stokes_cip(const mesh::PatchMesh& mesh, const Circle& circle,
       }
     }
   }
+  // Outflow x = 1: the natural condition of the momentum equation, dv/dn - p n = g, adds
+  // (g, phi) on the boundary (3-point Gauss along each sub-element side; the trace of
+  // both Q1 and P1 is linear along a straight side). It also fixes the pressure level.
+  for (const fe::SubElement& e : cut.elements) {
+    if (e.phase != Phase::fluid) continue;
+    for (int i = 0; i < e.vertices; ++i) {
+      const int na = e.node[i], nb = e.node[(i + 1) % e.vertices];
+      if (!on_outflow(mesh.nodes[na]) || !on_outflow(mesh.nodes[nb])) continue;
+      const double length = (cut.x[nb] - cut.x[na]).norm();
+      const double g = 0.5 * std::sqrt(0.6);
+      for (const auto& [t, w] : {std::array<double, 2>{0.5 - g, 5.0 / 18.0}, {0.5, 8.0 / 18.0},
+                                 {0.5 + g, 5.0 / 18.0}}) {
+        const Vec2 traction = outflow_traction((1 - t) * cut.x[na] + t * cut.x[nb]);
+        for (int d = 0; d < 2; ++d) {
+          rhs[kStride * na + d] += w * length * (1 - t) * traction[d];
+          rhs[kStride * nb + d] += w * length * t * traction[d];
+        }
+      }
+    }
+  }
+
   // + S_aniso(p, xi) in the divergence rows (gamma / (rho nu) with rho nu = 1).
   const std::vector<fe::StabilizationEdge> edges = fe::build_stabilization_edges(cut);
   forms::add_pressure_stabilization(mesh, cut, edges, gamma, kStride, 2, a);
 
   std::vector<char> fixed(kStride * n, 0);
   Eigen::VectorXd value = Eigen::VectorXd::Zero(kStride * n);
-  int pinned = -1;
   for (int i = 0; i < n; ++i) {
-    if (mesh.on_boundary[i] || cut.touches_solid[i])
+    const bool dirichlet = (mesh.on_boundary[i] && !on_outflow(mesh.nodes[i])) ||
+                           std::abs(std::abs(mesh.nodes[i].y()) - 1.0) < 1e-12;
+    if (dirichlet || cut.touches_solid[i])
       for (int d = 0; d < 2; ++d) {
         fixed[kStride * i + d] = 1;
         value[kStride * i + d] = velocity(cut.x[i])[d];
       }
     if (!cut.touches_fluid[i]) fixed[kStride * i + 2] = 1;  // p = 0, excluded
-    if (pinned < 0 && mesh.on_boundary[i] && cut.touches_fluid[i]) pinned = i;
   }
-  fixed[kStride * pinned + 2] = 1;
-  value[kStride * pinned + 2] = pressure(cut.x[pinned]);
   apply_dirichlet(a, rhs, fixed, value);
 
   solve::SparseLU lu;
@@ -90,33 +115,20 @@ StokesResult solve_stokes_cip(const mesh::PatchMesh& mesh, const Circle& circle,
   if (!result.factorized) return result;
   const Eigen::VectorXd x = lu.solve(rhs);
 
-  // Mean of the pressure error over the discrete fluid domain, then the norms.
-  double area = 0.0, mean = 0.0, v_l2 = 0.0;
-  std::vector<std::vector<fe::QuadraturePoint>> rules(cut.elements.size());
-  for (std::size_t k = 0; k < cut.elements.size(); ++k) {
-    const fe::SubElement& e = cut.elements[k];
+  // Errors over the discrete fluid domain (the outflow fixes the pressure level: no
+  // mean correction).
+  double v_l2 = 0.0, p_l2 = 0.0;
+  for (const fe::SubElement& e : cut.elements) {
     if (e.phase != Phase::fluid) continue;
-    rules[k] = error_quadrature(cut, e);
-    for (const fe::QuadraturePoint& q : rules[k]) {
+    for (const fe::QuadraturePoint& q : error_quadrature(cut, e)) {
       double ph = 0.0;
       Vec2 vh = Vec2::Zero();
       for (int i = 0; i < q.n; ++i) {
         ph += q.value[i] * x[kStride * e.node[i] + 2];
         vh += q.value[i] * Vec2(x[kStride * e.node[i]], x[kStride * e.node[i] + 1]);
       }
-      area += q.weight;
-      mean += q.weight * (ph - pressure(q.x));
+      p_l2 += q.weight * std::pow(ph - pressure(q.x), 2);
       v_l2 += q.weight * (vh - velocity(q.x)).squaredNorm();
-    }
-  }
-  mean /= area;
-  double p_l2 = 0.0;
-  for (std::size_t k = 0; k < cut.elements.size(); ++k) {
-    const fe::SubElement& e = cut.elements[k];
-    for (const fe::QuadraturePoint& q : rules[k]) {
-      double ph = 0.0;
-      for (int i = 0; i < q.n; ++i) ph += q.value[i] * x[kStride * e.node[i] + 2];
-      p_l2 += q.weight * std::pow(ph - mean - pressure(q.x), 2);
     }
   }
   result.velocity_l2 = std::sqrt(v_l2);
@@ -128,7 +140,7 @@ StokesResult solve_stokes_cip(const mesh::PatchMesh& mesh, const Circle& circle,
     if (std::abs(mesh.nodes[i].y() - 0.75) < std::abs(row_y - 0.75)) row_y = mesh.nodes[i].y();
   for (int i = 0; i < n; ++i) {
     if (!cut.touches_fluid[i]) continue;
-    const double ph = x[kStride * i + 2] - mean;
+    const double ph = x[kStride * i + 2];
     result.pressure_max = std::max(result.pressure_max, std::abs(ph - pressure(cut.x[i])));
     if (mesh.nodes[i].y() == row_y) result.line.push_back({cut.x[i].x(), ph, pressure(cut.x[i])});
   }
