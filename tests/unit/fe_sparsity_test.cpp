@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "fe/stabilization_edges.hpp"
+#include "solve/sparse_lu.hpp"
 #include "fe_test_meshes.hpp"
 
 namespace {
@@ -42,6 +43,25 @@ TEST(FeSparsity, PatternCoversElementAndStabilizationCouplings) {
   }
   // u never couples to p through a neighbour patch.
   EXPECT_LT(fsi::solve::value_index(a, 5 * 0 + 2, 5 * (mesh.num_nodes() - 1) + 4), 0);
+}
+
+TEST(FeSparsity, SymbolicAnalysisIsRedoneWhenOnlyTheRowIndicesDiffer) {
+  // Two 3x3 patterns with the same column counts but different rows.
+  auto matrix = [](int off_row) {
+    std::vector<Eigen::Triplet<double>> t{{0, 0, 4.0}, {1, 1, 4.0}, {2, 2, 4.0}, {off_row, 2, 1.0}};
+    fsi::solve::SparseMatrix m(3, 3);
+    m.setFromTriplets(t.begin(), t.end());
+    m.makeCompressed();
+    return m;
+  };
+  fsi::solve::SparseLU lu;
+  const Eigen::Vector3d x(1.0, -2.0, 3.0);
+  for (int row : {0, 1}) {
+    const auto m = matrix(row);
+    ASSERT_TRUE(lu.factorize(m));
+    EXPECT_LT((lu.solve(m * x) - x).norm(), 1e-14);
+  }
+  EXPECT_EQ(lu.symbolic_analyses(), 2);
 }
 
 }  // namespace
