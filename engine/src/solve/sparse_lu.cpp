@@ -24,9 +24,13 @@ void SparseLU::free_symbolic() {
 
 bool SparseLU::factorize(const Matrix& a) {
   assert(a.isCompressed() && a.rows() == a.cols());
+  // Same pattern = same column pointers AND same row indices (equal column counts alone
+  // do not make the symbolic analysis reusable).
   const bool same_pattern = symbolic_ && a.rows() == rows_ && a.nonZeros() == nonzeros_ &&
                             std::memcmp(outer_.data(), a.outerIndexPtr(),
-                                        sizeof(int) * (a.rows() + 1)) == 0;
+                                        sizeof(int) * (a.rows() + 1)) == 0 &&
+                            std::memcmp(inner_.data(), a.innerIndexPtr(),
+                                        sizeof(int) * a.nonZeros()) == 0;
   rows_ = a.rows();
   nonzeros_ = a.nonZeros();
   outer_ = Eigen::Map<const Eigen::VectorXi>(a.outerIndexPtr(), rows_ + 1);
