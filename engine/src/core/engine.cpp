@@ -101,6 +101,24 @@ struct Engine::Impl {
     newton.factorize_at(system, origin->iterate);
   }
 
+  /// Newton's start: the current solution, re-interpolated at the nodes that moved
+  /// between the current mesh and the new one. A moved node's old coefficient belongs to
+  /// another place; across a thin sub-element that inconsistency would show up as a huge
+  /// strain in the solid and stall Newton.
+  Eigen::VectorXd initial_guess() const {
+    Eigen::VectorXd x = state.solution;
+    for (int n = 0; n < mesh.num_nodes(); ++n) {
+      if (cut_next.x[n] == cut_cur.x[n]) continue;
+      const fe::Location loc = fe::locate(cut_cur, buckets, cut_next.x[n], 1e-6);
+      if (loc.element < 0) continue;
+      for (int f = 0; f < kFieldsPerNode; ++f)
+        x[kFieldsPerNode * n + f] = fe::evaluate(cut_cur, loc, state.solution, kFieldsPerNode, f);
+    }
+    for (int n = 0; n < mesh.num_nodes(); ++n)
+      if (mesh.on_wall[n]) x.segment(kFieldsPerNode * n, 2).setZero();
+    return x;
+  }
+
   interface::MappingOptions mapping_options(double k) const {
     interface::MappingOptions mo;
     mo.k_s = k;
@@ -136,7 +154,7 @@ struct Engine::Impl {
       report.message += std::to_string(ms.ips_failures) + " IPS point(s) did not converge; ";
     }
 
-    x = state.solution;
+    x = initial_guess();
     solve::NewtonOptions no;
     no.budget = numerics.newton_budget;
     no.rel_tol = numerics.newton_rel_tol;

@@ -81,9 +81,9 @@ MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuck
         const Vec2 u_cur = displacement(cur, loc, s_cur);
         double g = blend(std::abs(initial_distance(body, x - u_cur)), options.eps_patches * h,
                          options.delta_patches * h);
-        if (g > 0.0 && fluid && options.identity_gap_m > 0.0 &&
-            wall_distance(walls, x) < options.identity_gap_m)
-          g = 0.0;
+        // The chapter's contact treatment: T_m = id in the fluid gap near a wall.
+        const double gap = options.identity_gap_m > 0.0 ? options.identity_gap_m : mesh.patches[p].min_size_m;
+        if (g > 0.0 && fluid && wall_distance(walls, x) < gap) g = 0.0;
         Vec2 t = x;
         if (g > 0.0) {
           // (12.4): y - u_prev(y) = x - u_cur(x), Newton from y0 = x - u_cur(x) + u_prev(x).

@@ -27,7 +27,7 @@ struct Level {
 struct MappingOptions {
   double k_s = 1e-3;
   double eps_patches = 1.5, delta_patches = 3.0;
-  double identity_gap_m = 0.0;  ///< fluid points closer to a wall: T = id
+  double identity_gap_m = 0.0;  ///< fluid points closer to a wall: T = id (0: the patch's shorter side)
 };
 
 struct MappingStats {

@@ -103,6 +103,7 @@ PatchMesh build_patch_mesh(const MeshSpec& spec, const std::vector<Segment2>& wa
         const double wy = 0.5 * ((n[patch.node[6]] - n[patch.node[0]]).norm() +
                                  (n[patch.node[8]] - n[patch.node[2]]).norm());
         patch.size_m = std::max(wx, wy);
+        patch.min_size_m = std::min(wx, wy);
         mesh.patches.push_back(patch);
       }
   }

@@ -37,6 +37,7 @@ struct Patch {
   std::array<int, 4> neighbor{};  ///< patch across each Side, -1 on the boundary
   std::array<int, 4> edge{};      ///< global grid-edge id of each Side
   double size_m = 0.0;            ///< h_P: the longer of the patch's two mean side lengths
+  double min_size_m = 0.0;        ///< the shorter of the two (the patch height at the ground)
 };
 
 /// A grid edge: one side of one or two patches. Its midpoint node may move when the

@@ -97,6 +97,26 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
       trial = norm(r_try);
       if (trial < current) break;
     }
+    if (!(trial < current) && fresh && std::getenv("FSI_DEBUG")) {
+      Eigen::VectorXd rp, rm;
+      const double h = 1e-7;
+      system.residual(x + h * dx, rp);
+      system.residual(x - h * dx, rm);
+      const Eigen::VectorXd fd = (rp - rm) / (2 * h);
+      const Eigen::VectorXd jdx = jacobian_ * dx;
+      Eigen::Index i;
+      (fd - jdx).cwiseProduct(row_scale_).cwiseAbs().maxCoeff(&i);
+      std::fprintf(stderr, "DEBUG fresh direction failed: |J dx + r| = %g (|r| %g), |fd - J dx|max scaled = %g at dof %ld (node %ld field %ld): fd %g Jdx %g, rcond %g\n",
+                   (jdx + r).norm(), r.norm(), std::abs((fd - jdx)[i] * row_scale_[i]), (long)i, (long)i / 5, (long)i % 5, fd[i], jdx[i], lu_->rcond());
+      for (int f = 0; f < 5; ++f) {
+        double best = 0; long at = -1;
+        for (long j = f; j < dx.size(); j += 5) if (std::abs(dx[j]) > best) { best = std::abs(dx[j]); at = j / 5; }
+        std::fprintf(stderr, "  field %d: max |dx| %g at node %ld (x = %g)\n", f, best, at, x[5 * at + f]);
+      }
+      Eigen::Index k;
+      r.cwiseAbs().maxCoeff(&k);
+      std::fprintf(stderr, "  max |r| %g at node %ld field %ld\n", std::abs(r[k]), (long)k / 5, (long)k % 5);
+    }
     if (!(trial < current)) {
       // No decrease along this direction: with a stale factorization, refactorize and
       // try again (the iteration still counts against the budget).
@@ -104,7 +124,12 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
       if (fresh) break;  // even the exact Jacobian does not help: give up
       continue;
     }
-    need_refactor = trial > options.reuse_contraction * current;
+    // Keep the factorization while it contracts well enough *and* fast enough to reach
+    // the tolerance within the remaining budget at the observed rate.
+    const double rate = trial / current;
+    const int remaining = options.budget - it - 1;
+    need_refactor = rate > options.reuse_contraction ||
+                    (trial > tol && !fresh && trial * std::pow(rate, remaining) > tol);
     x.swap(x_try);
     r.swap(r_try);
     current = trial;
