@@ -163,7 +163,7 @@ TEST(Checkpoint, RefusesAnAbsurdCountEvenWithAValidChecksum) {
 TEST(Checkpoint, ReportsAnUnwritableTarget) {
   expect_input_error(
       [] { fsi::io::write_checkpoint("/nonexistent/dir/x.ckpt", sample_state(), "f"); },
-      {"/nonexistent/dir/x.ckpt", "cannot write checkpoint"});
+      {"/nonexistent/dir/x.ckpt", "cannot write"});
 }
 
 }  // namespace

@@ -3,14 +3,13 @@
 
 #include <array>
 #include <bit>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
 #include "fsi/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/fnv1a.hpp"
 
 namespace fsi::io {
@@ -147,28 +146,7 @@ void write_checkpoint(const std::filesystem::path& file, const State& state,
   for (const double* value : functional_fields(functionals)) w.f64(*value);
   w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
 
-  // Same folder as the target, so the rename is atomic (no cross-device move).
-  std::filesystem::path temp = file;
-  temp += ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out.write(w.bytes.data(), static_cast<std::streamsize>(w.bytes.size()));
-    out.close();
-    if (!out) {
-      const int err = errno;
-      std::error_code ignored;
-      std::filesystem::remove(temp, ignored);
-      throw InputError(file.string(), "",
-                       std::string("cannot write checkpoint: ") + std::strerror(err));
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, file, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    throw InputError(file.string(), "", "cannot write checkpoint: " + ec.message());
-  }
+  write_file_atomically(file, w.bytes);
 }
 
 State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint) {
