@@ -15,16 +15,14 @@
 
 #include "fsi/error.hpp"
 #include "io/fnv1a.hpp"
+#include "io_test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using fsi::test::expect_input_error;
 
-fs::path temp_file(const std::string& name) {
-  const fs::path dir = fs::path(FSI_BINARY_DIR) / "test_tmp" / "checkpoint";
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path temp_file(const std::string& name) { return fsi::test::scratch_dir("checkpoint") / name; }
 
 Eigen::VectorXd random_vector(std::mt19937_64& rng, int size) {
   std::uniform_real_distribution<double> u(-1e3, 1e3);
@@ -57,26 +55,8 @@ bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
          std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
 }
 
-std::string read_bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 void write_bytes(const fs::path& file, const std::string& bytes) {
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
-}
-
-void expect_input_error(const std::function<void()>& action,
-                        std::initializer_list<std::string> pieces) {
-  try {
-    action();
-    ADD_FAILURE() << "no InputError; expected one mentioning " << *pieces.begin();
-  } catch (const fsi::InputError& e) {
-    for (const std::string& piece : pieces) {
-      EXPECT_NE(std::string(e.what()).find(piece), std::string::npos)
-          << "message lacks \"" << piece << "\":\n  " << e.what();
-    }
-  }
 }
 
 TEST(Checkpoint, RoundTripIsBitIdentical) {
@@ -95,24 +75,24 @@ TEST(Checkpoint, RoundTripIsBitIdentical) {
   EXPECT_EQ(std::memcmp(&back.functionals, &s.functionals, sizeof s.functionals), 0);
 
   // Writing again over an existing checkpoint gives the same bytes.
-  const std::string first = read_bytes(file);
+  const std::string first = fsi::test::read_file(file);
   fsi::io::write_checkpoint(file, back, "0123456789abcdef");
-  EXPECT_EQ(read_bytes(file), first);
+  EXPECT_EQ(fsi::test::read_file(file), first);
 }
 
 TEST(Checkpoint, RefusesAnotherScenario) {
   const fs::path file = temp_file("other.ckpt");
   fsi::io::write_checkpoint(file, sample_state(), "aaaaaaaaaaaaaaaa");
-  expect_input_error([&] { fsi::io::read_checkpoint(file, "bbbbbbbbbbbbbbbb"); },
-                     {file.string(), "/fingerprint",
-                      "belongs to scenario fingerprint aaaaaaaaaaaaaaaa",
-                      "this engine runs bbbbbbbbbbbbbbbb"});
+  expect_input_error(
+      [&] { fsi::io::read_checkpoint(file, "bbbbbbbbbbbbbbbb"); },
+      {file.string(), "/fingerprint", "belongs to scenario fingerprint aaaaaaaaaaaaaaaa",
+       "this engine runs bbbbbbbbbbbbbbbb"});
 }
 
 TEST(Checkpoint, RefusesAnotherVersion) {
   const fs::path file = temp_file("version.ckpt");
   fsi::io::write_checkpoint(file, sample_state(), "f");
-  std::string bytes = read_bytes(file);
+  std::string bytes = fsi::test::read_file(file);
   bytes[8] = static_cast<char>(fsi::io::kCheckpointVersion + 1);
   write_bytes(file, bytes);
   expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
@@ -122,9 +102,9 @@ TEST(Checkpoint, RefusesAnotherVersion) {
 TEST(Checkpoint, RefusesTruncatedAndCorruptFiles) {
   const fs::path file = temp_file("cut.ckpt");
   fsi::io::write_checkpoint(file, sample_state(), "f");
-  const std::string bytes = read_bytes(file);
-  for (std::size_t keep : {std::size_t{0}, std::size_t{5}, std::size_t{12}, bytes.size() / 2,
-                           bytes.size() - 1}) {
+  const std::string bytes = fsi::test::read_file(file);
+  for (std::size_t keep :
+       {std::size_t{0}, std::size_t{5}, std::size_t{12}, bytes.size() / 2, bytes.size() - 1}) {
     SCOPED_TRACE(keep);
     write_bytes(file, bytes.substr(0, keep));
     expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); }, {file.string()});
@@ -142,14 +122,14 @@ TEST(Checkpoint, RefusesTruncatedAndCorruptFiles) {
   expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
                      {file.string(), "/magic", "not an fsi checkpoint"});
   expect_input_error([&] { fsi::io::read_checkpoint(temp_file("missing.ckpt"), "f"); },
-                     {"missing.ckpt", "no such regular file"});
+                     {"missing.ckpt", "cannot read checkpoint: no such file"});
 }
 
 TEST(Checkpoint, RefusesAnAbsurdCountEvenWithAValidChecksum) {
   // A writer bug or a forged file: the count must not trigger a huge allocation.
   const fs::path file = temp_file("count.ckpt");
   fsi::io::write_checkpoint(file, sample_state(), "f");
-  std::string bytes = read_bytes(file);
+  std::string bytes = fsi::test::read_file(file);
   const std::size_t count_at = 8 + 4 + 4 + 1 + 8 + 8 + 8;  // magic, version, "f", t, step, k
   for (int i = 0; i < 8; ++i) bytes[count_at + i] = static_cast<char>(0x7f);
   bytes.resize(bytes.size() - 8);

@@ -11,15 +11,14 @@
 #include <vector>
 
 #include "fsi/error.hpp"
+#include "io_test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 fs::path temp_file(const std::string& name) {
-  const fs::path dir = fs::path(FSI_BINARY_DIR) / "test_tmp" / "functionals_csv";
-  fs::create_directories(dir);
-  return dir / name;
+  return fsi::test::scratch_dir("functionals_csv") / name;
 }
 
 std::vector<std::string> lines(const fs::path& file) {
@@ -67,10 +66,10 @@ TEST(FunctionalsCsv, RowsReadBackExactlyInHeaderOrder) {
   ASSERT_EQ(row.size(), header.size());
   EXPECT_EQ(row[0], "42");
   const fsi::Functionals& f = s.functionals;
-  const std::vector<double> expected{s.time_s,      f.min_distance_m, f.bottom_y_m, f.top_y_m,
-                                     f.left_x_m,    f.right_x_m,      f.centroid_x_m,
-                                     f.centroid_y_m, f.mean_vx_mps,   f.mean_vy_mps,
-                                     f.solid_area_m2, f.mass_error};
+  const std::vector<double> expected{s.time_s,       f.min_distance_m, f.bottom_y_m,
+                                     f.top_y_m,      f.left_x_m,       f.right_x_m,
+                                     f.centroid_x_m, f.centroid_y_m,   f.mean_vx_mps,
+                                     f.mean_vy_mps,  f.solid_area_m2,  f.mass_error};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(std::strtod(row[i + 1].c_str(), nullptr), expected[i]) << header[i + 1];
   }
@@ -101,12 +100,9 @@ TEST(FunctionalsCsv, NewtonColumnsComeFromTheStepReport) {
 }
 
 TEST(FunctionalsCsv, ReportsAnUnwritableFile) {
-  try {
-    fsi::io::FunctionalsCsv csv("/nonexistent/dir/f.csv", false);
-    ADD_FAILURE() << "no InputError";
-  } catch (const fsi::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/f.csv"), std::string::npos);
-  }
+  fsi::test::expect_input_error(
+      [] { fsi::io::FunctionalsCsv csv("/nonexistent/dir/f.csv", false); },
+      {"/nonexistent/dir/f.csv", "cannot open for writing"});
 }
 
 }  // namespace

@@ -6,21 +6,18 @@
 #include <fstream>
 #include <string>
 
+#include "io_test_support.hpp"
 #include "xml_check.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+std::string read_text(const fs::path& file) { return fsi::test::read_file(file); }
 
 TEST(PvdSeries, IsCompleteAfterEveryAdd) {
-  const fs::path dir = fs::path(FSI_BINARY_DIR) / "test_tmp" / "pvd_series";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fsi::test::scratch_dir("pvd_series");
+  fs::remove(dir / "run.pvd");
   fsi::io::PvdSeries series(dir / "run.pvd");
   EXPECT_FALSE(fs::exists(series.file()));  // nothing written before the first frame
   series.add(0.0, "a_0.vtu");

@@ -76,8 +76,7 @@ TEST(ScenarioAssets, MaterialStudy) {
 TEST(ScenarioAssets, ContactStudy) {
   for (const char* d0 : {"1e-3", "5e-3", "1e-2"}) {
     for (const char* gamma : {"800", "1600"}) {
-      const fsi::Scenario s =
-          load(std::string("contact/d0_") + d0 + "_g" + gamma + ".json");
+      const fsi::Scenario s = load(std::string("contact/d0_") + d0 + "_g" + gamma + ".json");
       EXPECT_EQ(s.contact.dist0_m, std::stod(d0));
       EXPECT_EQ(s.contact.gamma_c, std::stod(gamma));
       EXPECT_EQ(s.solid.mu_pa, 3.2e6);

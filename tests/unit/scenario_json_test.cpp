@@ -10,25 +10,12 @@
 
 #include "fsi/error.hpp"
 #include "fsi/scenario.hpp"
+#include "io_test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Runs `action`, which must throw fsi::InputError whose message contains every piece.
-void expect_input_error(const std::function<void()>& action,
-                        std::initializer_list<std::string> pieces) {
-  try {
-    action();
-    ADD_FAILURE() << "no InputError; expected one mentioning " << *pieces.begin();
-  } catch (const fsi::InputError& e) {
-    const std::string message = e.what();
-    for (const std::string& piece : pieces) {
-      EXPECT_NE(message.find(piece), std::string::npos)
-          << "message lacks \"" << piece << "\":\n  " << message;
-    }
-  }
-}
+using fsi::test::expect_input_error;
 
 /// parse_scenario of `text` must fail with a message naming the origin, `key` and `why`.
 void expect_parse_error(const std::string& text, const std::string& key,
@@ -40,9 +27,7 @@ void expect_parse_error(const std::string& text, const std::string& key,
 }
 
 fs::path temp_file(const std::string& name) {
-  const fs::path dir = fs::path(FSI_BINARY_DIR) / "test_tmp" / "scenario_json";
-  fs::create_directories(dir);
-  return dir / name;
+  return fsi::test::scratch_dir("scenario_json") / name;
 }
 
 TEST(ScenarioJson, EmptyObjectIsExample1) {
@@ -87,11 +72,11 @@ TEST(ScenarioJson, RoundTripsExactly) {
 
 TEST(ScenarioJson, WritesEveryField) {
   const std::string text = fsi::to_json(fsi::example1_scenario());
-  for (const char* key : {"\"name\"", "\"blocks\"", "\"from_m\"", "\"corners\"", "\"refinements\"",
-                          "\"walls\"", "\"initial_velocity_mps\"", "\"viscosity_m2ps\"",
-                          "\"lambda_pa\"", "\"gravity_mps2\"", "\"failure_policy\"",
-                          "\"identity_gap_m\"", "\"dist0_m\"", "\"range_max\"",
-                          "\"mesh_overlay\""}) {
+  for (const char* key :
+       {"\"name\"", "\"blocks\"", "\"from_m\"", "\"corners\"", "\"refinements\"", "\"walls\"",
+        "\"initial_velocity_mps\"", "\"viscosity_m2ps\"", "\"lambda_pa\"", "\"gravity_mps2\"",
+        "\"failure_policy\"", "\"identity_gap_m\"", "\"dist0_m\"", "\"range_max\"",
+        "\"mesh_overlay\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key;
   }
 }
@@ -153,7 +138,8 @@ TEST(ScenarioJson, RejectsWrongTypes) {
   expect_parse_error(R"({"walls": [[[0, 0], [1, null]]]})", "/walls/0/1/1",
                      {"must be a finite number in [-1000, 1000] m", "got null"});
   expect_parse_error(R"({"name": 7})", "/name", {"characters from", "got number 7"});
-  expect_parse_error(R"({"mesh": {"blocks": {}}})", "/mesh/blocks", {"must be an array of 1 to 64"});
+  expect_parse_error(R"({"mesh": {"blocks": {}}})", "/mesh/blocks",
+                     {"must be an array of 1 to 64"});
 }
 
 TEST(ScenarioJson, RejectsUnknownAndDuplicateKeys) {
@@ -227,14 +213,13 @@ std::string box_mesh(const std::string& x_pieces, const std::string& y_pieces) {
 }
 std::string piece(double from, double to, int patches, double first = 0, double last = 0) {
   return "{\"from_m\": " + std::to_string(from) + ", \"to_m\": " + std::to_string(to) +
-         ", \"patches\": " + std::to_string(patches) + ", \"first_m\": " +
-         std::to_string(first) + ", \"last_m\": " + std::to_string(last) + "}";
+         ", \"patches\": " + std::to_string(patches) + ", \"first_m\": " + std::to_string(first) +
+         ", \"last_m\": " + std::to_string(last) + "}";
 }
 
 TEST(ScenarioJson, AcceptsAUniformBox) {
-  const fsi::Scenario s =
-      fsi::parse_scenario(box_mesh(piece(-1, 1, 8), piece(-1, 0, 4) + ", " + piece(0, 0.5, 2)),
-                          "box.json");
+  const fsi::Scenario s = fsi::parse_scenario(
+      box_mesh(piece(-1, 1, 8), piece(-1, 0, 4) + ", " + piece(0, 0.5, 2)), "box.json");
   EXPECT_EQ(s.mesh.blocks[0].y.size(), 2u);
 }
 
@@ -274,15 +259,17 @@ TEST(ScenarioJson, RejectsInconsistentGeometry) {
 
 TEST(ScenarioJson, ChecksMappedBlocks) {
   const std::string unit = piece(0, 1, 4);
-  const std::string good = R"({"mesh": {"blocks": [{"x": [)" + unit + "], \"y\": [" + unit +
-                           R"(], "mapped": true, "corners": [[-1, -1], [1, -1], [1, 0.5], [-1, 0.5]]}]}})";
+  const std::string good =
+      R"({"mesh": {"blocks": [{"x": [)" + unit + "], \"y\": [" + unit +
+      R"(], "mapped": true, "corners": [[-1, -1], [1, -1], [1, 0.5], [-1, 0.5]]}]}})";
   EXPECT_NO_THROW(fsi::parse_scenario(good, "mapped.json"));
-  const std::string clockwise = R"({"mesh": {"blocks": [{"x": [)" + unit + "], \"y\": [" + unit +
-                                R"(], "mapped": true, "corners": [[-1, -1], [-1, 0.5], [1, 0.5], [1, -1]]}]}})";
+  const std::string clockwise =
+      R"({"mesh": {"blocks": [{"x": [)" + unit + "], \"y\": [" + unit +
+      R"(], "mapped": true, "corners": [[-1, -1], [-1, 0.5], [1, 0.5], [1, -1]]}]}})";
   expect_parse_error(clockwise, "/mesh/blocks/0/corners", {"counter-clockwise"});
-  const std::string wide = R"({"mesh": {"blocks": [{"x": [)" + piece(0, 2, 4) + "], \"y\": [" +
-                           unit +
-                           R"(], "mapped": true, "corners": [[-1, -1], [1, -1], [1, 0.5], [-1, 0.5]]}]}})";
+  const std::string wide =
+      R"({"mesh": {"blocks": [{"x": [)" + piece(0, 2, 4) + "], \"y\": [" + unit +
+      R"(], "mapped": true, "corners": [[-1, -1], [1, -1], [1, 0.5], [-1, 0.5]]}]}})";
   expect_parse_error(wide, "/mesh/blocks/0/x", {"must cover [0, 1]", "got [0, 2]"});
 }
 
@@ -302,13 +289,13 @@ TEST(ScenarioJson, SurvivesDeepNestingAndHugeInput) {
     out.put('}');
   }
   expect_input_error([&] { fsi::load_scenario(big); },
-                     {"big.json", "must be at most 1048576 bytes", "104857601"});
+                     {"big.json", "scenario file is 104857601 bytes, must be at most 1048576 bytes"});
   fs::remove(big);
 }
 
 TEST(ScenarioJson, LoadReportsFileProblems) {
   expect_input_error([] { fsi::load_scenario("/nonexistent/nothing.json"); },
-                     {"/nonexistent/nothing.json", "no such file"});
+                     {"/nonexistent/nothing.json", "cannot read scenario: no such file"});
   expect_input_error([] { fsi::load_scenario(FSI_BINARY_DIR); }, {"not a regular file"});
   const fs::path file = temp_file("typo.json");
   std::ofstream(file) << R"({"numerics": {"end_tme_s": 2}})";

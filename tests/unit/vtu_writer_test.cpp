@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io_test_support.hpp"
 #include "xml_check.hpp"
 
 namespace {
@@ -14,16 +15,13 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::path(FSI_BINARY_DIR) / "test_tmp" / "vtu_writer" / name;
+  const fs::path dir = fsi::test::scratch_dir("vtu_writer") / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+std::string read_text(const fs::path& file) { return fsi::test::read_file(file); }
 
 /// Two triangles on the unit square, the second solid, with distinct nodal values.
 fsi::FieldView square_view() {
@@ -60,8 +58,8 @@ TEST(VtuWriter, WritesAWellFormedGridThatReadsBack) {
   }
   EXPECT_EQ(arrays.at("vx"), v.vx);  // bit-exact round trip of the text
   EXPECT_EQ(arrays.at("uy"), v.uy);
-  EXPECT_EQ(arrays.at("velocity"), (std::vector<double>{0.1, -1, 0, 0.2, -2, 0, 0.3, -3, 0,
-                                                        1.0 / 3.0, -4, 0}));
+  EXPECT_EQ(arrays.at("velocity"),
+            (std::vector<double>{0.1, -1, 0, 0.2, -2, 0, 0.3, -3, 0, 1.0 / 3.0, -4, 0}));
   EXPECT_EQ(arrays.at("displacement").size(), 12u);
   EXPECT_EQ(arrays.at("phase"), (std::vector<double>{0, 1}));
   EXPECT_EQ(arrays.at(""), (std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}));
@@ -105,8 +103,10 @@ TEST(VtuWriter, FramesBuildAPvdSeries) {
     // After every frame the .pvd is complete and lists every frame so far.
     const std::string pvd = read_text(dir / "run.pvd");
     EXPECT_TRUE(fsi::test::tags_balanced(pvd));
-    EXPECT_NE(pvd.find("file=\"ball_" + std::string(i == 0 ? "000000" : i == 1 ? "000010"
-                                                                               : "000020") +
+    EXPECT_NE(pvd.find("file=\"ball_" +
+                       std::string(i == 0   ? "000000"
+                                   : i == 1 ? "000010"
+                                            : "000020") +
                        ".vtu\""),
               std::string::npos)
         << pvd;

@@ -3,13 +3,12 @@
 
 #include <array>
 #include <bit>
-#include <fstream>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 #include "fsi/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bounded_file.hpp"
 #include "io/fnv1a.hpp"
 
 namespace fsi::io {
@@ -19,12 +18,12 @@ constexpr std::array<char, 8> kMagic{'F', 'S', 'I', '-', 'C', 'K', 'P', 'T'};
 /// Longer fingerprints are not ours (fsi::fingerprint gives 16 hex digits).
 constexpr std::uint32_t kMaxFingerprintBytes = 256;
 /// Larger files are not checkpoints of a mesh validate() accepts (2e6 nodes).
-constexpr std::uintmax_t kMaxCheckpointBytes = std::uintmax_t{4} << 30;
+constexpr std::size_t kMaxCheckpointBytes = std::size_t{4} << 30;
 
 /// The functionals in file order.
 std::array<double*, 11> functional_fields(Functionals& f) {
-  return {&f.min_distance_m, &f.bottom_y_m,  &f.top_y_m,       &f.left_x_m,
-          &f.right_x_m,      &f.centroid_x_m, &f.centroid_y_m, &f.mean_vy_mps,
+  return {&f.min_distance_m, &f.bottom_y_m,    &f.top_y_m,      &f.left_x_m,
+          &f.right_x_m,      &f.centroid_x_m,  &f.centroid_y_m, &f.mean_vy_mps,
           &f.mean_vx_mps,    &f.solid_area_m2, &f.mass_error};
 }
 
@@ -104,34 +103,13 @@ class Reader {
   std::size_t offset_ = 0;
 };
 
-std::string read_all(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    throw InputError(name, "", "cannot read checkpoint: no such regular file");
-  }
-  const auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError(name, "", "cannot read checkpoint: " + ec.message());
-  if (size > kMaxCheckpointBytes) {
-    throw InputError(name, "", "checkpoint is " + std::to_string(size) +
-                                   " bytes, must be at most " +
-                                   std::to_string(kMaxCheckpointBytes) + " bytes");
-  }
-  std::ifstream in(file, std::ios::binary);
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  in.read(bytes.data(), static_cast<std::streamsize>(size));
-  bytes.resize(static_cast<std::size_t>(in.gcount()));
-  if (!in && !in.eof()) throw InputError(name, "", "cannot read checkpoint: read error");
-  return bytes;
-}
-
 }  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const State& state,
                       const std::string& scenario_fingerprint) {
   Writer w;
-  w.bytes.reserve(64 + 8 * static_cast<std::size_t>(state.solution.size() * 2 +
-                                                    state.node_xy.size() * 2));
+  w.bytes.reserve(
+      64 + 8 * static_cast<std::size_t>(state.solution.size() * 2 + state.node_xy.size() * 2));
   w.bytes.append(kMagic.data(), kMagic.size());
   w.u32(kCheckpointVersion);
   w.text(scenario_fingerprint);
@@ -151,7 +129,7 @@ void write_checkpoint(const std::filesystem::path& file, const State& state,
 
 State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint) {
   const std::string name = file.string();
-  const std::string bytes = read_all(file);
+  const std::string bytes = read_bounded_file(file, kMaxCheckpointBytes, "checkpoint");
 
   if (bytes.size() < kMagic.size() ||
       bytes.compare(0, kMagic.size(), kMagic.data(), kMagic.size()) != 0) {
@@ -161,35 +139,37 @@ State read_checkpoint(const std::filesystem::path& file, const std::string& expe
   head.raw(kMagic.size(), "magic");
   const std::uint32_t version = head.u32("version");
   if (version != kCheckpointVersion) {
-    throw InputError(name, "/version", "checkpoint format version " + std::to_string(version) +
-                                           ", this engine reads version " +
-                                           std::to_string(kCheckpointVersion) + " only");
+    throw InputError(name, "/version",
+                     "checkpoint format version " + std::to_string(version) +
+                         ", this engine reads version " + std::to_string(kCheckpointVersion) +
+                         " only");
   }
   // The checksum covers everything, so check it before trusting any count or value.
   if (bytes.size() < head.offset() + 8) {
-    throw InputError(name, "/checksum", "truncated: the file has only " +
-                                            std::to_string(bytes.size()) + " bytes");
+    throw InputError(name, "/checksum",
+                     "truncated: the file has only " + std::to_string(bytes.size()) + " bytes");
   }
   const std::size_t body = bytes.size() - 8;
   Reader tail(std::string_view(bytes).substr(body), name);
   if (tail.u64("checksum") != fnv1a(bytes.data(), body)) {
-    throw InputError(name, "/checksum", "checksum mismatch: the file is truncated or corrupt (" +
-                                            std::to_string(bytes.size()) + " bytes)");
+    throw InputError(name, "/checksum",
+                     "checksum mismatch: the file is truncated or corrupt (" +
+                         std::to_string(bytes.size()) + " bytes)");
   }
 
   Reader r(std::string_view(bytes).substr(0, body), name);
   r.raw(head.offset(), "version");
   const std::uint32_t length = r.u32("fingerprint");
   if (length > kMaxFingerprintBytes) {
-    throw InputError(name, "/fingerprint", "corrupt: fingerprint of " + std::to_string(length) +
-                                               " bytes, at most " +
-                                               std::to_string(kMaxFingerprintBytes) + " allowed");
+    throw InputError(name, "/fingerprint",
+                     "corrupt: fingerprint of " + std::to_string(length) + " bytes, at most " +
+                         std::to_string(kMaxFingerprintBytes) + " allowed");
   }
   const std::string found = r.raw(length, "fingerprint");
   if (found != expected_fingerprint) {
     throw InputError(name, "/fingerprint",
-                     "checkpoint belongs to scenario fingerprint " + found +
-                         ", this engine runs " + expected_fingerprint);
+                     "checkpoint belongs to scenario fingerprint " + found + ", this engine runs " +
+                         expected_fingerprint);
   }
 
   State state;
@@ -202,8 +182,9 @@ State read_checkpoint(const std::filesystem::path& file, const std::string& expe
   state.previous_node_xy = r.vector("previous_node_xy");
   for (double* value : functional_fields(state.functionals)) *value = r.f64("functionals");
   if (r.offset() != body) {  // the reader never passes `body`
-    throw InputError(name, "/checksum", "corrupt: " + std::to_string(body - r.offset()) +
-                                            " unexpected bytes before the checksum");
+    throw InputError(
+        name, "/checksum",
+        "corrupt: " + std::to_string(body - r.offset()) + " unexpected bytes before the checksum");
   }
   return state;
 }

@@ -12,8 +12,7 @@ inline constexpr std::uint64_t kFnvOffsetBasis = 14695981039346656037ull;
 inline constexpr std::uint64_t kFnvPrime = 1099511628211ull;
 
 /// Continues the hash `h` over `size` bytes at `data`.
-inline std::uint64_t fnv1a(const void* data, std::size_t size,
-                           std::uint64_t h = kFnvOffsetBasis) {
+inline std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t h = kFnvOffsetBasis) {
   const auto* bytes = static_cast<const unsigned char*>(data);
   for (std::size_t i = 0; i < size; ++i) {
     h ^= bytes[i];

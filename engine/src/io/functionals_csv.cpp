@@ -18,9 +18,9 @@ std::string functionals_csv_header(bool with_newton_columns) {
 
 std::string functionals_csv_row(long step, double time_s, const Functionals& f) {
   std::string row = std::to_string(step);
-  for (double v : {time_s, f.min_distance_m, f.bottom_y_m, f.top_y_m, f.left_x_m, f.right_x_m,
-                   f.centroid_x_m, f.centroid_y_m, f.mean_vx_mps, f.mean_vy_mps, f.solid_area_m2,
-                   f.mass_error}) {
+  for (double v :
+       {time_s, f.min_distance_m, f.bottom_y_m, f.top_y_m, f.left_x_m, f.right_x_m, f.centroid_x_m,
+        f.centroid_y_m, f.mean_vx_mps, f.mean_vy_mps, f.solid_area_m2, f.mass_error}) {
     row.append(",").append(number_text(v));
   }
   return row;

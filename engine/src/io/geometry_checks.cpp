@@ -53,11 +53,11 @@ void check_piece(const AxisPiece& piece, const KeyPath& at) {
     const double small = std::min(piece.first_m, piece.last_m);
     const double large = std::max(piece.first_m, piece.last_m);
     if (small > mean * (1.0 + kRelTol) || large < mean * (1.0 - kRelTol)) {
-      fail(at / "first_m",
-           "with last_m = " + number_text(piece.last_m) + " m, the mean patch size " +
-               number_text(mean) + " m (length / patches) must lie in [min, max] of first_m " +
-               "and last_m (sizes change monotonically), got first_m = " +
-               number_text(piece.first_m));
+      fail(at / "first_m", "with last_m = " + number_text(piece.last_m) +
+                               " m, the mean patch size " + number_text(mean) +
+                               " m (length / patches) must lie in [min, max] of first_m " +
+                               "and last_m (sizes change monotonically), got first_m = " +
+                               number_text(piece.first_m));
     }
   }
 }
@@ -80,10 +80,9 @@ Interval check_axis(const std::vector<AxisPiece>& pieces, const KeyPath& at) {
     const Interval& before = spans[order[k - 1]];
     const Interval& here = spans[order[k]];
     if (here.lo > before.hi + tol) {
-      fail(at / order[k], "pieces must join without a gap: piece " +
-                              std::to_string(order[k - 1]) + " covers " +
-                              interval_text(before) + " m, this one " + interval_text(here) +
-                              " m");
+      fail(at / order[k], "pieces must join without a gap: piece " + std::to_string(order[k - 1]) +
+                              " covers " + interval_text(before) + " m, this one " +
+                              interval_text(here) + " m");
     }
     if (here.lo < before.hi - tol) {
       fail(at / order[k], "pieces must not overlap: piece " + std::to_string(order[k - 1]) +
@@ -102,16 +101,16 @@ double cross(const Point2& o, const Point2& a, const Point2& b) {
 void check_corners(const std::array<Point2, 4>& c, const KeyPath& at) {
   for (std::size_t i = 0; i < 4; ++i) {
     if (!(cross(c[i], c[(i + 1) % 4], c[(i + 2) % 4]) > 0.0)) {
-      fail(at / "corners", "must form a convex quadrilateral, counter-clockwise from the "
-                           "lower left; it does not turn left at corner " +
-                               std::to_string((i + 1) % 4) + " " + point_text(c[(i + 1) % 4]));
+      fail(at / "corners",
+           "must form a convex quadrilateral, counter-clockwise from the "
+           "lower left; it does not turn left at corner " +
+               std::to_string((i + 1) % 4) + " " + point_text(c[(i + 1) % 4]));
     }
   }
 }
 
 /// The region a block covers, as corner points counter-clockwise.
-std::array<Point2, 4> block_outline(const BlockSpec& block, const Interval& x,
-                                    const Interval& y) {
+std::array<Point2, 4> block_outline(const BlockSpec& block, const Interval& x, const Interval& y) {
   if (block.mapped) return block.corners;
   return {Point2{x.lo, y.lo}, Point2{x.hi, y.lo}, Point2{x.hi, y.hi}, Point2{x.lo, y.hi}};
 }
@@ -164,8 +163,10 @@ void check_mesh(const MeshSpec& mesh, const KeyPath& at) {
       for (const auto& [axis, span] : {std::pair{"x", x}, std::pair{"y", y}}) {
         const double tol = kRelTol;
         if (std::abs(span.lo) > tol || std::abs(span.hi - 1.0) > tol) {
-          fail(here / axis, "must cover [0, 1] in a mapped block (unit-square coordinates), "
-                            "got " + interval_text(span));
+          fail(here / axis,
+               "must cover [0, 1] in a mapped block (unit-square coordinates), "
+               "got " +
+                   interval_text(span));
         }
       }
       check_corners(block.corners, here);
@@ -175,8 +176,8 @@ void check_mesh(const MeshSpec& mesh, const KeyPath& at) {
   if (nodes > kMaxNodes) {
     fail(at / "refinements", "the mesh must have at most " + number_text(kMaxNodes) +
                                  " nodes (summed over blocks, after " +
-                                 std::to_string(mesh.refinements) +
-                                 " refinements), got " + number_text(nodes));
+                                 std::to_string(mesh.refinements) + " refinements), got " +
+                                 number_text(nodes));
   }
 }
 
@@ -184,8 +185,10 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
   for (std::size_t w = 0; w < s.walls.size(); ++w) {
     const Segment2& wall = s.walls[w];
     if (!(std::hypot(wall.b.x - wall.a.x, wall.b.y - wall.a.y) > 0.0)) {
-      fail(at / "walls" / w, "must have a positive length (two different end points), got "
-                             "both ends at " + point_text(wall.a));
+      fail(at / "walls" / w,
+           "must have a positive length (two different end points), got "
+           "both ends at " +
+               point_text(wall.a));
     }
   }
   const auto quads = outlines(s.mesh, at / "mesh");
@@ -203,23 +206,21 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
   const double r = s.body.radius_m;
   if (!center_inside) {
     fail(at / "body" / "center_m",
-         "must lie inside a mesh block (domain bounding box " + box + " m), got " +
-             point_text(c));
+         "must lie inside a mesh block (domain bounding box " + box + " m), got " + point_text(c));
   }
   const double room = std::min({c.x - lo.x, hi.x - c.x, c.y - lo.y, hi.y - c.y});
   if (!(r < room)) {
-    fail(at / "body" / "radius_m", "must be in (0, " + number_text(room) +
-                                       ") m so the ball at " + point_text(c) +
-                                       " lies inside the domain " + box + " m, got " +
-                                       number_text(r));
+    fail(at / "body" / "radius_m", "must be in (0, " + number_text(room) + ") m so the ball at " +
+                                       point_text(c) + " lies inside the domain " + box +
+                                       " m, got " + number_text(r));
   }
   for (std::size_t w = 0; w < s.walls.size(); ++w) {
     const double d = distance_to_segment(c, s.walls[w]);
     if (!(d > r)) {
       fail(at / "body" / "center_m",
            "the ball must start clear of wall " + std::to_string(w) +
-               ": distance from the center to the wall must exceed radius_m = " +
-               number_text(r) + " m, got " + number_text(d) + " m at center " + point_text(c));
+               ": distance from the center to the wall must exceed radius_m = " + number_text(r) +
+               " m, got " + number_text(d) + " m at center " + point_text(c));
     }
   }
 }

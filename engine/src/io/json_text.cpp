@@ -1,9 +1,7 @@
 // Bounded JSON parsing: nlohmann's parser plus a callback that tracks where it is.
 #include "io/json_text.hpp"
 
-#include <fstream>
 #include <set>
-#include <system_error>
 #include <vector>
 
 #include "fsi/error.hpp"
@@ -12,32 +10,6 @@
 namespace fsi::io {
 
 using json = nlohmann::json;
-
-std::string read_text_file(const std::filesystem::path& file, std::size_t max_bytes) {
-  const std::string name = file.string();
-  std::error_code ec;
-  const auto status = std::filesystem::status(file, ec);
-  if (ec || !std::filesystem::exists(status)) {
-    throw InputError(name, "", "cannot open: no such file");
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw InputError(name, "", "cannot read: not a regular file");
-  }
-  const auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError(name, "", "cannot read: " + ec.message());
-  if (size > max_bytes) {
-    throw InputError(name, "", "file is " + std::to_string(size) + " bytes, must be at most " +
-                                   std::to_string(max_bytes) + " bytes");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(name, "", "cannot open for reading");
-  std::string text(static_cast<std::size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  // The file may have changed since file_size(); keep what was read.
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (in.bad()) throw InputError(name, "", "read error");
-  return text;
-}
 
 namespace {
 
@@ -59,8 +31,9 @@ class Tracker {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
         if (depth >= kMaxJsonDepth || frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
-          throw InputError(origin_, path(), "JSON is nested deeper than " +
-                                                std::to_string(kMaxJsonDepth) + " levels");
+          throw InputError(
+              origin_, path(),
+              "JSON is nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
         }
         frames_.push_back(Frame{event == json::parse_event_t::array_start, 0, {}, {}});
         break;
@@ -127,18 +100,18 @@ std::string parser_reason(const std::string& what) {
 json parse_json_text(const std::string& text, const std::string& origin,
                      const AllowedAt& allowed_at) {
   if (text.size() > kMaxScenarioBytes) {
-    throw InputError(origin, "", "text is " + std::to_string(text.size()) +
-                                     " bytes, must be at most " +
-                                     std::to_string(kMaxScenarioBytes) + " bytes");
+    throw InputError(origin, "",
+                     "text is " + std::to_string(text.size()) + " bytes, must be at most " +
+                         std::to_string(kMaxScenarioBytes) + " bytes");
   }
   Tracker tracker(origin);
   try {
     return json::parse(text, std::ref(tracker), /*allow_exceptions=*/true,
                        /*ignore_comments=*/false);
   } catch (const json::parse_error& e) {
-    throw InputError(origin, tracker.path(),
-                     "not valid JSON at " + line_column(text, e.byte) + ": " +
-                         parser_reason(e.what()));
+    throw InputError(
+        origin, tracker.path(),
+        "not valid JSON at " + line_column(text, e.byte) + ": " + parser_reason(e.what()));
   } catch (const json::out_of_range& e) {
     // 406: a number literal beyond the double range (e.g. 1e999).
     const std::string path = tracker.path();

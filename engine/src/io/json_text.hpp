@@ -1,14 +1,11 @@
 #pragma once
 /// \file json_text.hpp
-/// Bounded JSON input: reading a small text file and parsing it with limits on size and
-/// nesting depth, rejecting duplicate keys, and turning every parser failure into an
+/// Bounded JSON input: parsing with limits on size and nesting depth, rejecting duplicate keys, and turning every parser failure into an
 /// fsi::InputError with line/column or the key path where parsing stopped.
 #include <cstddef>
-#include <filesystem>
 #include <functional>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace fsi::io {
 
@@ -16,10 +13,6 @@ namespace fsi::io {
 inline constexpr std::size_t kMaxScenarioBytes = std::size_t{1} << 20;
 /// Deepest nesting accepted; the scenario format needs 5 levels.
 inline constexpr int kMaxJsonDepth = 32;
-
-/// The whole file as text; throws InputError(file, "", why) if it is missing, not a
-/// regular file, unreadable or larger than `max_bytes` (checked before reading).
-std::string read_text_file(const std::filesystem::path& file, std::size_t max_bytes);
 
 /// Explains what a JSON value at a key path should have been; used to word the error
 /// for numbers that overflow a double, which the parser rejects before we see them.

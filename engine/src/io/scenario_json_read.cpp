@@ -11,6 +11,7 @@
 
 #include "fsi/error.hpp"
 #include "fsi/scenario.hpp"
+#include "io/bounded_file.hpp"
 #include "io/json_text.hpp"
 #include "io/number_text.hpp"
 #include "io/scenario_rules.hpp"
@@ -114,8 +115,7 @@ void read(const json& j, const KeyPath& at, Segment2& out, const Real& rule) {
 
 void read(const json& j, const KeyPath& at, std::array<Point2, 4>& out, const Real& rule) {
   expect(j.is_array() && j.size() == 4, at,
-         "must be 4 points [[x, y], ...] (counter-clockwise from the lower left) in " +
-             rule.text(),
+         "must be 4 points [[x, y], ...] (counter-clockwise from the lower left) in " + rule.text(),
          j);
   for (std::size_t i = 0; i < 4; ++i) read(j[i], at / i, out[i], rule);
 }
@@ -202,11 +202,17 @@ class RuleFinder {
 
  private:
   template <class T>
-  void describe_member(T&, const Real& rule) { found = allowed(rule); }
+  void describe_member(T&, const Real& rule) {
+    found = allowed(rule);
+  }
   template <class T>
-  void describe_member(T&, const Int& rule) { found = allowed(rule); }
+  void describe_member(T&, const Int& rule) {
+    found = allowed(rule);
+  }
   template <class T>
-  void describe_member(T& member, const Fields&) { visit_fields(*this, member); }
+  void describe_member(T& member, const Fields&) {
+    visit_fields(*this, member);
+  }
   template <class T, class R>
   void describe_member(std::vector<T>&, const List<R>& rule) {
     ++depth_;  // the item index
@@ -247,7 +253,7 @@ Scenario parse_scenario(const std::string& json_text, const std::string& origin)
 }
 
 Scenario load_scenario(const std::filesystem::path& file) {
-  return parse_scenario(io::read_text_file(file, io::kMaxScenarioBytes), file.string());
+  return parse_scenario(io::read_bounded_file(file, io::kMaxScenarioBytes, "scenario"), file.string());
 }
 
 }  // namespace fsi

@@ -1,8 +1,7 @@
 // Scenario to JSON (every field, doubles in shortest round-trip form) and its fingerprint.
 #include <cstdio>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "fsi/scenario.hpp"
 #include "io/fnv1a.hpp"
@@ -26,18 +25,28 @@ class JsonWriter {
 
  private:
   template <class R>
-  static Json value(const double& v, const R&) { return v; }
+  static Json value(const double& v, const R&) {
+    return v;
+  }
   template <class R>
-  static Json value(const int& v, const R&) { return v; }
+  static Json value(const int& v, const R&) {
+    return v;
+  }
   template <class R>
-  static Json value(const bool& v, const R&) { return v; }
+  static Json value(const bool& v, const R&) {
+    return v;
+  }
   template <class R>
-  static Json value(const std::string& v, const R&) { return v; }
+  static Json value(const std::string& v, const R&) {
+    return v;
+  }
   static Json value(const FailurePolicy& v, const Choice& rule) {
     return std::string(rule.names[static_cast<std::size_t>(v)]);
   }
   template <class R>
-  static Json value(const Point2& p, const R&) { return Json::array({p.x, p.y}); }
+  static Json value(const Point2& p, const R&) {
+    return Json::array({p.x, p.y});
+  }
   template <class R>
   static Json value(const Segment2& s, const R& rule) {
     return Json::array({value(s.a, rule), value(s.b, rule)});
@@ -82,8 +91,7 @@ std::string fingerprint(const Scenario& scenario) {
   const std::string canonical =
       writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx",
-                static_cast<unsigned long long>(io::fnv1a(canonical)));
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(io::fnv1a(canonical)));
   return hex;
 }
 

@@ -24,8 +24,8 @@ std::string Real::text() const {
 }
 
 bool Name::valid_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-         c == '_' || c == '.' || c == '+' || c == '=' || c == '-';
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '.' || c == '+' || c == '=' || c == '-';
 }
 
 std::string Choice::text() const {
@@ -49,8 +49,7 @@ void fail(const KeyPath& at, const std::string& why) { throw InputError(*at.orig
 std::string allowed(const Real& rule) { return "must be a finite number in " + rule.text(); }
 
 std::string allowed(const Int& rule) {
-  return "must be an integer in [" + std::to_string(rule.lo) + ", " + std::to_string(rule.hi) +
-         "]";
+  return "must be an integer in [" + std::to_string(rule.lo) + ", " + std::to_string(rule.hi) + "]";
 }
 
 std::string allowed(const Name&) {

@@ -64,8 +64,7 @@ struct List {
 
 inline constexpr std::array<std::string_view, 3> kFailurePolicyNames{
     "accept_and_flag", "halve_step", "stop_and_rollback"};
-inline constexpr std::array<std::string_view, 5> kOutputFieldNames{"vx", "vy", "vmag", "p",
-                                                                   "umag"};
+inline constexpr std::array<std::string_view, 5> kOutputFieldNames{"vx", "vy", "vmag", "p", "umag"};
 
 /// Coordinates and lengths: a generous box around any lab-scale set-up, and far from
 /// the range where squaring a coordinate could overflow.

@@ -50,13 +50,11 @@ class RuleChecker {
     check_member(at / 0, s.a, rule);
     check_member(at / 1, s.b, rule);
   }
-  static void check_member(const KeyPath& at, const std::array<Point2, 4>& c,
-                           const Real& rule) {
+  static void check_member(const KeyPath& at, const std::array<Point2, 4>& c, const Real& rule) {
     for (std::size_t i = 0; i < c.size(); ++i) check_member(at / i, c[i], rule);
   }
   template <class T, class R>
-  static void check_member(const KeyPath& at, const std::vector<T>& items,
-                           const List<R>& rule) {
+  static void check_member(const KeyPath& at, const std::vector<T>& items, const List<R>& rule) {
     if (items.size() < rule.min || items.size() > rule.max) {
       fail(at, "must have " + std::to_string(rule.min) + " to " + std::to_string(rule.max) +
                    " entries, got " + std::to_string(items.size()));
@@ -79,16 +77,18 @@ void check_numerics(const NumericsSpec& n, const KeyPath& at) {
   }
   // The blend g of T_m goes from 0 at eps to 1 at delta (both in patch sizes).
   if (!(n.blend_eps_patches < n.blend_delta_patches)) {
-    fail(at / "blend_eps_patches", "must be smaller than blend_delta_patches = " +
-                                       number_text(n.blend_delta_patches) + " patches, got " +
-                                       number_text(n.blend_eps_patches));
+    fail(at / "blend_eps_patches",
+         "must be smaller than blend_delta_patches = " + number_text(n.blend_delta_patches) +
+             " patches, got " + number_text(n.blend_eps_patches));
   }
 }
 
 void check_contact(const ContactSpec& c, const KeyPath& at) {
   if (c.gamma_c > 0.0 && !(c.dist0_m > 0.0)) {
-    fail(at / "dist0_m", "must be in (0, 1000] m when gamma_c > 0 (the force acts below dist0), "
-                         "got " + number_text(c.dist0_m));
+    fail(at / "dist0_m",
+         "must be in (0, 1000] m when gamma_c > 0 (the force acts below dist0), "
+         "got " +
+             number_text(c.dist0_m));
   }
 }
 

@@ -19,7 +19,8 @@ void data_array(std::string& out, const char* type, const std::string& name, int
                 WriteValues&& values) {
   out.append("        <DataArray type=\"").append(type).append("\"");
   if (!name.empty()) out.append(" Name=\"").append(name).append("\"");
-  if (components > 1) out.append(" NumberOfComponents=\"").append(std::to_string(components)).append("\"");
+  if (components > 1)
+    out.append(" NumberOfComponents=\"").append(std::to_string(components)).append("\"");
   out += " format=\"ascii\">\n";
   values(out);
   out += "\n        </DataArray>\n";
@@ -65,8 +66,9 @@ void points(std::string& out, const std::vector<Point2>& nodes) {
 
 void time_value(std::string& out, double time_s) {
   out += "    <FieldData>\n";
-  out += "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
-         "format=\"ascii\">";
+  out +=
+      "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+      "format=\"ascii\">";
   out.append(number_text(time_s)).append("</DataArray>\n    </FieldData>\n");
 }
 
@@ -74,9 +76,8 @@ void check_view(const FieldView& view) {
   const std::size_t n = view.nodes.size();
   for (const auto* field : {&view.vx, &view.vy, &view.p, &view.ux, &view.uy}) {
     if (field->size() != n) {
-      throw std::invalid_argument("write_vtu: a nodal field has " +
-                                  std::to_string(field->size()) + " values for " +
-                                  std::to_string(n) + " nodes");
+      throw std::invalid_argument("write_vtu: a nodal field has " + std::to_string(field->size()) +
+                                  " values for " + std::to_string(n) + " nodes");
     }
   }
   if (view.triangle_phase.size() != view.triangles.size()) {
