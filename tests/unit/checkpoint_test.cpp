@@ -51,8 +51,10 @@ fsi::State sample_state() {
 }
 
 bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  // memcmp on the data of an empty vector (nullptr) would be undefined.
   return a.size() == b.size() &&
-         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+         (a.size() == 0 ||
+          std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0);
 }
 
 void write_bytes(const fs::path& file, const std::string& bytes) {
