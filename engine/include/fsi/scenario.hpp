@@ -131,12 +131,17 @@ Scenario example1_scenario();
 void validate(const Scenario& scenario);
 
 /// Reads and validates a JSON scenario file. Throws fsi::InputError.
+/// The file overrides Example 1: keys it leaves out keep example1_scenario()'s values
+/// (`{}` is Example 1); unknown or duplicate keys are errors. JSON keys equal the member
+/// names; points are [x, y], walls [[x0, y0], [x1, y1]], enums their names. See
+/// assets/scenarios/README.md.
 Scenario load_scenario(const std::filesystem::path& file);
 /// Same, from a string (`origin` is used in error messages).
 Scenario parse_scenario(const std::string& json_text, const std::string& origin);
 /// The scenario as JSON (round-trips through parse_scenario).
 std::string to_json(const Scenario& scenario);
-/// A stable fingerprint of the scenario's physics and numerics (for checkpoints).
+/// A stable fingerprint of the scenario's physics and numerics (for checkpoints): 16 hex
+/// digits of a 64-bit FNV-1a hash of the canonical JSON without name, source and output.
 std::string fingerprint(const Scenario& scenario);
 
 }  // namespace fsi

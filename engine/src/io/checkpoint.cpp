@@ -1,0 +1,192 @@
+// Checkpoint files: State <-> bytes, with a checksum and an atomic write.
+#include "io/checkpoint.hpp"
+
+#include <array>
+#include <bit>
+#include <string_view>
+#include <vector>
+
+#include "fsi/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/bounded_file.hpp"
+#include "io/fnv1a.hpp"
+
+namespace fsi::io {
+namespace {
+
+constexpr std::array<char, 8> kMagic{'F', 'S', 'I', '-', 'C', 'K', 'P', 'T'};
+/// Longer fingerprints are not ours (fsi::fingerprint gives 16 hex digits).
+constexpr std::uint32_t kMaxFingerprintBytes = 256;
+/// Larger files are not checkpoints of a mesh validate() accepts (2e6 nodes).
+constexpr std::size_t kMaxCheckpointBytes = std::size_t{4} << 30;
+
+/// The functionals in file order.
+std::array<double*, 11> functional_fields(Functionals& f) {
+  return {&f.min_distance_m, &f.bottom_y_m,    &f.top_y_m,      &f.left_x_m,
+          &f.right_x_m,      &f.centroid_x_m,  &f.centroid_y_m, &f.mean_vy_mps,
+          &f.mean_vx_mps,    &f.solid_area_m2, &f.mass_error};
+}
+
+/// Appends little-endian values to a byte buffer.
+class Writer {
+ public:
+  std::string bytes;
+
+  void u32(std::uint32_t v) { little_endian(v, 4); }
+  void u64(std::uint64_t v) { little_endian(v, 8); }
+  void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+  void text(const std::string& s) {
+    u32(static_cast<std::uint32_t>(s.size()));
+    bytes += s;
+  }
+  void vector(const Eigen::VectorXd& v) {
+    u64(static_cast<std::uint64_t>(v.size()));
+    for (Eigen::Index i = 0; i < v.size(); ++i) f64(v[i]);
+  }
+
+ private:
+  void little_endian(std::uint64_t v, int count) {
+    for (int i = 0; i < count; ++i) bytes += static_cast<char>((v >> (8 * i)) & 0xffu);
+  }
+};
+
+/// Reads little-endian values from a byte buffer; every read is bounds-checked.
+class Reader {
+ public:
+  Reader(std::string_view bytes, const std::string& file) : bytes_(bytes), file_(file) {}
+
+  std::uint32_t u32(const char* what) { return static_cast<std::uint32_t>(little_endian(4, what)); }
+  std::uint64_t u64(const char* what) { return little_endian(8, what); }
+  double f64(const char* what) { return std::bit_cast<double>(u64(what)); }
+  std::string raw(std::size_t size, const char* what) {
+    need(size, what);
+    std::string s(bytes_.substr(offset_, size));
+    offset_ += size;
+    return s;
+  }
+  Eigen::VectorXd vector(const char* what) {
+    const std::uint64_t count = u64(what);
+    // Checked before allocating: a corrupt count must not ask for terabytes.
+    if (count > (bytes_.size() - offset_) / 8) {
+      throw InputError(file_, std::string("/") + what,
+                       "truncated or corrupt: " + std::to_string(count) +
+                           " values announced, only " +
+                           std::to_string((bytes_.size() - offset_) / 8) + " fit in the file");
+    }
+    Eigen::VectorXd v(static_cast<Eigen::Index>(count));
+    for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = f64(what);
+    return v;
+  }
+  std::size_t offset() const { return offset_; }
+
+ private:
+  void need(std::size_t size, const char* what) {
+    if (size > bytes_.size() - offset_) {
+      throw InputError(file_, std::string("/") + what,
+                       "truncated: needs " + std::to_string(size) + " bytes at offset " +
+                           std::to_string(offset_) + ", the file has " +
+                           std::to_string(bytes_.size()) + " bytes");
+    }
+  }
+  std::uint64_t little_endian(int count, const char* what) {
+    need(static_cast<std::size_t>(count), what);
+    std::uint64_t v = 0;
+    for (int i = 0; i < count; ++i) {
+      v |= std::uint64_t{static_cast<unsigned char>(bytes_[offset_ + i])} << (8 * i);
+    }
+    offset_ += static_cast<std::size_t>(count);
+    return v;
+  }
+
+  std::string_view bytes_;
+  const std::string& file_;
+  std::size_t offset_ = 0;
+};
+
+}  // namespace
+
+void write_checkpoint(const std::filesystem::path& file, const State& state,
+                      const std::string& scenario_fingerprint) {
+  Writer w;
+  w.bytes.reserve(
+      64 + 8 * static_cast<std::size_t>(state.solution.size() * 2 + state.node_xy.size() * 2));
+  w.bytes.append(kMagic.data(), kMagic.size());
+  w.u32(kCheckpointVersion);
+  w.text(scenario_fingerprint);
+  w.f64(state.time_s);
+  w.u64(static_cast<std::uint64_t>(state.step));
+  w.f64(state.time_step_s);
+  for (const Eigen::VectorXd* v :
+       {&state.solution, &state.previous_solution, &state.node_xy, &state.previous_node_xy}) {
+    w.vector(*v);
+  }
+  Functionals functionals = state.functionals;
+  for (const double* value : functional_fields(functionals)) w.f64(*value);
+  w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
+
+  write_file_atomically(file, w.bytes);
+}
+
+State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint) {
+  const std::string name = file.string();
+  const std::string bytes = read_bounded_file(file, kMaxCheckpointBytes, "checkpoint");
+
+  if (bytes.size() < kMagic.size() ||
+      bytes.compare(0, kMagic.size(), kMagic.data(), kMagic.size()) != 0) {
+    throw InputError(name, "/magic", "not an fsi checkpoint (it must start with \"FSI-CKPT\")");
+  }
+  Reader head(bytes, name);
+  head.raw(kMagic.size(), "magic");
+  const std::uint32_t version = head.u32("version");
+  if (version != kCheckpointVersion) {
+    throw InputError(name, "/version",
+                     "checkpoint format version " + std::to_string(version) +
+                         ", this engine reads version " + std::to_string(kCheckpointVersion) +
+                         " only");
+  }
+  // The checksum covers everything, so check it before trusting any count or value.
+  if (bytes.size() < head.offset() + 8) {
+    throw InputError(name, "/checksum",
+                     "truncated: the file has only " + std::to_string(bytes.size()) + " bytes");
+  }
+  const std::size_t body = bytes.size() - 8;
+  Reader tail(std::string_view(bytes).substr(body), name);
+  if (tail.u64("checksum") != fnv1a(bytes.data(), body)) {
+    throw InputError(name, "/checksum",
+                     "checksum mismatch: the file is truncated or corrupt (" +
+                         std::to_string(bytes.size()) + " bytes)");
+  }
+
+  Reader r(std::string_view(bytes).substr(0, body), name);
+  r.raw(head.offset(), "version");
+  const std::uint32_t length = r.u32("fingerprint");
+  if (length > kMaxFingerprintBytes) {
+    throw InputError(name, "/fingerprint",
+                     "corrupt: fingerprint of " + std::to_string(length) + " bytes, at most " +
+                         std::to_string(kMaxFingerprintBytes) + " allowed");
+  }
+  const std::string found = r.raw(length, "fingerprint");
+  if (found != expected_fingerprint) {
+    throw InputError(name, "/fingerprint",
+                     "checkpoint belongs to scenario fingerprint " + found + ", this engine runs " +
+                         expected_fingerprint);
+  }
+
+  State state;
+  state.time_s = r.f64("time_s");
+  state.step = static_cast<long>(r.u64("step"));
+  state.time_step_s = r.f64("time_step_s");
+  state.solution = r.vector("solution");
+  state.previous_solution = r.vector("previous_solution");
+  state.node_xy = r.vector("node_xy");
+  state.previous_node_xy = r.vector("previous_node_xy");
+  for (double* value : functional_fields(state.functionals)) *value = r.f64("functionals");
+  if (r.offset() != body) {  // the reader never passes `body`
+    throw InputError(
+        name, "/checksum",
+        "corrupt: " + std::to_string(body - r.offset()) + " unexpected bytes before the checksum");
+  }
+  return state;
+}
+
+}  // namespace fsi::io

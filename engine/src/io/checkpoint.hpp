@@ -1,0 +1,37 @@
+#pragma once
+/// \file checkpoint.hpp
+/// Binary checkpoints of a State: restoring one and stepping on gives bit-identical
+/// results, so every double is stored bit for bit.
+///
+/// Layout (all integers and doubles little-endian):
+///   magic       8 bytes "FSI-CKPT"
+///   version     u32 (kCheckpointVersion)
+///   fingerprint u32 length + bytes (fsi::fingerprint of the scenario that wrote it)
+///   time_s f64, step i64, time_step_s f64
+///   solution, previous_solution, node_xy, previous_node_xy: each u64 count + count f64
+///   functionals: 11 f64 in the order of fsi::Functionals' members
+///   checksum    u64 FNV-1a of every byte before it
+/// The Engine's save_checkpoint/load_checkpoint wrap these.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "fsi/state.hpp"
+
+namespace fsi::io {
+
+/// Bump when the layout or the meaning of a stored field changes.
+inline constexpr std::uint32_t kCheckpointVersion = 1;
+
+/// Writes `state` to `file` atomically (a temporary file in the same folder, then a
+/// rename): a crash mid-write leaves the previous checkpoint intact. Throws InputError if
+/// the file cannot be written.
+void write_checkpoint(const std::filesystem::path& file, const State& state,
+                      const std::string& scenario_fingerprint);
+
+/// Reads a checkpoint written for the scenario with `expected_fingerprint`. Throws
+/// InputError naming the file and what is wrong: not a checkpoint, another format
+/// version, corrupt or truncated, or written by another scenario.
+State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint);
+
+}  // namespace fsi::io

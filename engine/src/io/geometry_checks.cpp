@@ -1,0 +1,228 @@
+// The relations validate() checks between values: mesh axes, mapped blocks, mesh size,
+// walls, and where the ball starts.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "io/number_text.hpp"
+#include "io/scenario_checks.hpp"
+
+namespace fsi::io {
+namespace {
+
+/// Coordinates are compared with this relative tolerance: the files give them with
+/// a few digits, and sums of piece lengths may differ in the last bits.
+constexpr double kRelTol = 1e-9;
+
+struct Interval {
+  double lo, hi;
+};
+
+// Built by appending: GCC 12 warns falsely (-Wrestrict) on "(" + std::string temporaries.
+std::string interval_text(const Interval& i) {
+  std::string t = "[";
+  t.append(number_text(i.lo)).append(", ").append(number_text(i.hi)).append("]");
+  return t;
+}
+
+std::string point_text(const Point2& p) {
+  std::string t = "(";
+  t.append(number_text(p.x)).append(", ").append(number_text(p.y)).append(")");
+  return t;
+}
+
+/// Checks one piece's length and grading (the mean patch size lies between the end sizes
+/// of a monotone grading).
+void check_piece(const AxisPiece& piece, const KeyPath& at) {
+  const double length = std::abs(piece.to_m - piece.from_m);
+  if (!(length > 0.0)) {
+    fail(at / "to_m", "must differ from from_m = " + number_text(piece.from_m) +
+                          " m (a piece needs a length), got " + number_text(piece.to_m));
+  }
+  for (const char* key : {"first_m", "last_m"}) {
+    const double size = key[0] == 'f' ? piece.first_m : piece.last_m;
+    if (size > length * (1.0 + kRelTol)) {
+      fail(at / key, "must be in [0, " + number_text(length) +
+                         "] m (at most the piece length |to_m - from_m|), got " +
+                         number_text(size));
+    }
+  }
+  if (piece.first_m > 0.0 && piece.last_m > 0.0) {
+    const double mean = length / piece.patches;
+    const double small = std::min(piece.first_m, piece.last_m);
+    const double large = std::max(piece.first_m, piece.last_m);
+    if (small > mean * (1.0 + kRelTol) || large < mean * (1.0 - kRelTol)) {
+      fail(at / "first_m", "with last_m = " + number_text(piece.last_m) +
+                               " m, the mean patch size " + number_text(mean) +
+                               " m (length / patches) must lie in [min, max] of first_m " +
+                               "and last_m (sizes change monotonically), got first_m = " +
+                               number_text(piece.first_m));
+    }
+  }
+}
+
+/// Checks the pieces of one axis and returns the interval they tile.
+Interval check_axis(const std::vector<AxisPiece>& pieces, const KeyPath& at) {
+  std::vector<std::size_t> order(pieces.size());
+  std::vector<Interval> spans(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    check_piece(pieces[i], at / i);
+    spans[i] = {std::min(pieces[i].from_m, pieces[i].to_m),
+                std::max(pieces[i].from_m, pieces[i].to_m)};
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return spans[a].lo < spans[b].lo; });
+  const Interval whole{spans[order.front()].lo, spans[order.back()].hi};
+  const double tol = kRelTol * std::max(1.0, whole.hi - whole.lo);
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const Interval& before = spans[order[k - 1]];
+    const Interval& here = spans[order[k]];
+    if (here.lo > before.hi + tol) {
+      fail(at / order[k], "pieces must join without a gap: piece " + std::to_string(order[k - 1]) +
+                              " covers " + interval_text(before) + " m, this one " +
+                              interval_text(here) + " m");
+    }
+    if (here.lo < before.hi - tol) {
+      fail(at / order[k], "pieces must not overlap: piece " + std::to_string(order[k - 1]) +
+                              " covers " + interval_text(before) + " m, this one " +
+                              interval_text(here) + " m");
+    }
+  }
+  return whole;
+}
+
+double cross(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+/// A mapped block's corners form a convex quadrilateral, counter-clockwise.
+void check_corners(const std::array<Point2, 4>& c, const KeyPath& at) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (!(cross(c[i], c[(i + 1) % 4], c[(i + 2) % 4]) > 0.0)) {
+      fail(at / "corners",
+           "must form a convex quadrilateral, counter-clockwise from the "
+           "lower left; it does not turn left at corner " +
+               std::to_string((i + 1) % 4) + " " + point_text(c[(i + 1) % 4]));
+    }
+  }
+}
+
+/// The region a block covers, as corner points counter-clockwise.
+std::array<Point2, 4> block_outline(const BlockSpec& block, const Interval& x, const Interval& y) {
+  if (block.mapped) return block.corners;
+  return {Point2{x.lo, y.lo}, Point2{x.hi, y.lo}, Point2{x.hi, y.hi}, Point2{x.lo, y.hi}};
+}
+
+/// Outlines of all blocks (assumes check_mesh passed).
+std::vector<std::array<Point2, 4>> outlines(const MeshSpec& mesh, const KeyPath& at) {
+  std::vector<std::array<Point2, 4>> result;
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const BlockSpec& block = mesh.blocks[b];
+    result.push_back(block_outline(block, check_axis(block.x, at / "blocks" / b / "x"),
+                                   check_axis(block.y, at / "blocks" / b / "y")));
+  }
+  return result;
+}
+
+bool inside(const std::array<Point2, 4>& quad, const Point2& p) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (cross(quad[i], quad[(i + 1) % 4], p) < 0.0) return false;
+  }
+  return true;
+}
+
+double distance_to_segment(const Point2& p, const Segment2& s) {
+  const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+  const double len2 = dx * dx + dy * dy;
+  double t = len2 > 0.0 ? ((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p.x - (s.a.x + t * dx), p.y - (s.a.y + t * dy));
+}
+
+}  // namespace
+
+double block_node_count(const BlockSpec& block, int refinements) {
+  const double scale = 2.0 * std::ldexp(1.0, refinements);  // 2 cells per patch, then 2^r
+  double nx = 0.0, ny = 0.0;
+  for (const AxisPiece& p : block.x) nx += p.patches;
+  for (const AxisPiece& p : block.y) ny += p.patches;
+  return (scale * nx + 1.0) * (scale * ny + 1.0);
+}
+
+void check_mesh(const MeshSpec& mesh, const KeyPath& at) {
+  double nodes = 0.0;
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const BlockSpec& block = mesh.blocks[b];
+    const KeyPath here = at / "blocks" / b;
+    const Interval x = check_axis(block.x, here / "x");
+    const Interval y = check_axis(block.y, here / "y");
+    if (block.mapped) {
+      // The axes of a mapped block are coordinates in the unit square.
+      for (const auto& [axis, span] : {std::pair{"x", x}, std::pair{"y", y}}) {
+        const double tol = kRelTol;
+        if (std::abs(span.lo) > tol || std::abs(span.hi - 1.0) > tol) {
+          fail(here / axis,
+               "must cover [0, 1] in a mapped block (unit-square coordinates), "
+               "got " +
+                   interval_text(span));
+        }
+      }
+      check_corners(block.corners, here);
+    }
+    nodes += block_node_count(block, mesh.refinements);
+  }
+  if (nodes > kMaxNodes) {
+    fail(at / "refinements", "the mesh must have at most " + number_text(kMaxNodes) +
+                                 " nodes (summed over blocks, after " +
+                                 std::to_string(mesh.refinements) + " refinements), got " +
+                                 number_text(nodes));
+  }
+}
+
+void check_body_and_walls(const Scenario& s, const KeyPath& at) {
+  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+    const Segment2& wall = s.walls[w];
+    if (!(std::hypot(wall.b.x - wall.a.x, wall.b.y - wall.a.y) > 0.0)) {
+      fail(at / "walls" / w,
+           "must have a positive length (two different end points), got "
+           "both ends at " +
+               point_text(wall.a));
+    }
+  }
+  const auto quads = outlines(s.mesh, at / "mesh");
+  Point2 lo{quads.front()[0]}, hi{quads.front()[0]};
+  bool center_inside = false;
+  for (const auto& quad : quads) {
+    for (const Point2& p : quad) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    center_inside = center_inside || inside(quad, s.body.center_m);
+  }
+  const std::string box = interval_text({lo.x, hi.x}) + " x " + interval_text({lo.y, hi.y});
+  const Point2& c = s.body.center_m;
+  const double r = s.body.radius_m;
+  if (!center_inside) {
+    fail(at / "body" / "center_m",
+         "must lie inside a mesh block (domain bounding box " + box + " m), got " + point_text(c));
+  }
+  const double room = std::min({c.x - lo.x, hi.x - c.x, c.y - lo.y, hi.y - c.y});
+  if (!(r < room)) {
+    fail(at / "body" / "radius_m", "must be in (0, " + number_text(room) + ") m so the ball at " +
+                                       point_text(c) + " lies inside the domain " + box +
+                                       " m, got " + number_text(r));
+  }
+  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+    const double d = distance_to_segment(c, s.walls[w]);
+    if (!(d > r)) {
+      fail(at / "body" / "center_m",
+           "the ball must start clear of wall " + std::to_string(w) +
+               ": distance from the center to the wall must exceed radius_m = " + number_text(r) +
+               " m, got " + number_text(d) + " m at center " + point_text(c));
+    }
+  }
+}
+
+}  // namespace fsi::io

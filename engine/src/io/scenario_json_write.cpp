@@ -1,0 +1,98 @@
+// Scenario to JSON (every field, doubles in shortest round-trip form) and its fingerprint.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "fsi/scenario.hpp"
+#include "io/fnv1a.hpp"
+#include "io/scenario_schema.hpp"
+
+namespace fsi {
+namespace io {
+namespace {
+
+/// Builds a JSON object from a struct's visit_fields. `Json` is nlohmann::ordered_json
+/// for files people read (schema order) and nlohmann::json (sorted keys) for hashing.
+template <class Json>
+class JsonWriter {
+ public:
+  Json object = Json::object();
+
+  template <class T, class R>
+  void operator()(std::string_view key, const T& member, const R& rule) {
+    object[std::string(key)] = value(member, rule);
+  }
+
+ private:
+  template <class R>
+  static Json value(const double& v, const R&) {
+    return v;
+  }
+  template <class R>
+  static Json value(const int& v, const R&) {
+    return v;
+  }
+  template <class R>
+  static Json value(const bool& v, const R&) {
+    return v;
+  }
+  template <class R>
+  static Json value(const std::string& v, const R&) {
+    return v;
+  }
+  static Json value(const FailurePolicy& v, const Choice& rule) {
+    return std::string(rule.names[static_cast<std::size_t>(v)]);
+  }
+  template <class R>
+  static Json value(const Point2& p, const R&) {
+    return Json::array({p.x, p.y});
+  }
+  template <class R>
+  static Json value(const Segment2& s, const R& rule) {
+    return Json::array({value(s.a, rule), value(s.b, rule)});
+  }
+  template <class R>
+  static Json value(const std::array<Point2, 4>& corners, const R& rule) {
+    Json a = Json::array();
+    for (const Point2& p : corners) a.push_back(value(p, rule));
+    return a;
+  }
+  template <class T, class R>
+  static Json value(const std::vector<T>& items, const List<R>& rule) {
+    Json a = Json::array();
+    for (const T& item : items) a.push_back(value(item, rule.item));
+    return a;
+  }
+  template <class T>
+  static Json value(const T& member, const Fields&) {
+    JsonWriter nested;
+    visit_fields(nested, member);
+    return nested.object;
+  }
+};
+
+}  // namespace
+}  // namespace io
+
+std::string to_json(const Scenario& scenario) {
+  io::JsonWriter<nlohmann::ordered_json> writer;
+  io::visit_fields(writer, scenario);
+  // Names are checked to be ASCII by validate(); `replace` keeps an unvalidated
+  // scenario with broken UTF-8 printable instead of throwing.
+  return writer.object.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+std::string fingerprint(const Scenario& scenario) {
+  io::JsonWriter<nlohmann::json> writer;  // sorted keys: independent of member order
+  io::visit_fields(writer, scenario);
+  // The name and the output settings do not change the physics or the numerics.
+  writer.object.erase("name");
+  writer.object.erase("output");
+  const std::string canonical =
+      writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(io::fnv1a(canonical)));
+  return hex;
+}
+
+}  // namespace fsi

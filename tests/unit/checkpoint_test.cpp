@@ -1,0 +1,151 @@
+#include "io/checkpoint.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "fsi/error.hpp"
+#include "io/fnv1a.hpp"
+#include "io_test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using fsi::test::expect_input_error;
+
+fs::path temp_file(const std::string& name) { return fsi::test::scratch_dir("checkpoint") / name; }
+
+Eigen::VectorXd random_vector(std::mt19937_64& rng, int size) {
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  Eigen::VectorXd v(size);
+  for (int i = 0; i < size; ++i) v[i] = u(rng);
+  return v;
+}
+
+/// A state with awkward doubles: signed zero, subnormals, infinities, a NaN payload.
+fsi::State sample_state() {
+  std::mt19937_64 rng(42);
+  fsi::State s;
+  s.time_s = 1.0 / 3.0;
+  s.step = 123456789012L;
+  s.time_step_s = 2e-3;
+  s.solution = random_vector(rng, 5 * 40);
+  s.solution[0] = -0.0;
+  s.solution[1] = std::numeric_limits<double>::denorm_min();
+  s.solution[2] = std::numeric_limits<double>::infinity();
+  s.solution[3] = std::bit_cast<double>(std::uint64_t{0x7ff8000000000abcull});
+  s.previous_solution = random_vector(rng, 5 * 40);
+  s.node_xy = random_vector(rng, 2 * 40);
+  s.previous_node_xy = random_vector(rng, 0);
+  s.functionals = {1e-3, -0.6, 0.4, -0.4, 0.4, 0.01, -0.2, -0.3, 0.001, 0.5026, 1e-9};
+  return s;
+}
+
+bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  // memcmp on the data of an empty vector (nullptr) would be undefined.
+  return a.size() == b.size() &&
+         (a.size() == 0 ||
+          std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0);
+}
+
+void write_bytes(const fs::path& file, const std::string& bytes) {
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+TEST(Checkpoint, RoundTripIsBitIdentical) {
+  const fs::path file = temp_file("round.ckpt");
+  const fsi::State s = sample_state();
+  fsi::io::write_checkpoint(file, s, "0123456789abcdef");
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+  const fsi::State back = fsi::io::read_checkpoint(file, "0123456789abcdef");
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(back.time_s), std::bit_cast<std::uint64_t>(s.time_s));
+  EXPECT_EQ(back.step, s.step);
+  EXPECT_EQ(back.time_step_s, s.time_step_s);
+  EXPECT_TRUE(same_bits(back.solution, s.solution));
+  EXPECT_TRUE(same_bits(back.previous_solution, s.previous_solution));
+  EXPECT_TRUE(same_bits(back.node_xy, s.node_xy));
+  EXPECT_TRUE(same_bits(back.previous_node_xy, s.previous_node_xy));
+  EXPECT_EQ(std::memcmp(&back.functionals, &s.functionals, sizeof s.functionals), 0);
+
+  // Writing again over an existing checkpoint gives the same bytes.
+  const std::string first = fsi::test::read_file(file);
+  fsi::io::write_checkpoint(file, back, "0123456789abcdef");
+  EXPECT_EQ(fsi::test::read_file(file), first);
+}
+
+TEST(Checkpoint, RefusesAnotherScenario) {
+  const fs::path file = temp_file("other.ckpt");
+  fsi::io::write_checkpoint(file, sample_state(), "aaaaaaaaaaaaaaaa");
+  expect_input_error(
+      [&] { fsi::io::read_checkpoint(file, "bbbbbbbbbbbbbbbb"); },
+      {file.string(), "/fingerprint", "belongs to scenario fingerprint aaaaaaaaaaaaaaaa",
+       "this engine runs bbbbbbbbbbbbbbbb"});
+}
+
+TEST(Checkpoint, RefusesAnotherVersion) {
+  const fs::path file = temp_file("version.ckpt");
+  fsi::io::write_checkpoint(file, sample_state(), "f");
+  std::string bytes = fsi::test::read_file(file);
+  bytes[8] = static_cast<char>(fsi::io::kCheckpointVersion + 1);
+  write_bytes(file, bytes);
+  expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
+                     {file.string(), "/version", "format version 2", "reads version 1"});
+}
+
+TEST(Checkpoint, RefusesTruncatedAndCorruptFiles) {
+  const fs::path file = temp_file("cut.ckpt");
+  fsi::io::write_checkpoint(file, sample_state(), "f");
+  const std::string bytes = fsi::test::read_file(file);
+  for (std::size_t keep :
+       {std::size_t{0}, std::size_t{5}, std::size_t{12}, bytes.size() / 2, bytes.size() - 1}) {
+    SCOPED_TRACE(keep);
+    write_bytes(file, bytes.substr(0, keep));
+    expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); }, {file.string()});
+  }
+  write_bytes(file, bytes.substr(0, bytes.size() / 2));
+  expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
+                     {"/checksum", "truncated or corrupt"});
+
+  std::string flipped = bytes;
+  flipped[flipped.size() / 2] ^= 0x10;
+  write_bytes(file, flipped);
+  expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); }, {"checksum mismatch"});
+
+  write_bytes(file, "{\"name\": \"not a checkpoint\"}");
+  expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
+                     {file.string(), "/magic", "not an fsi checkpoint"});
+  expect_input_error([&] { fsi::io::read_checkpoint(temp_file("missing.ckpt"), "f"); },
+                     {"missing.ckpt", "cannot read checkpoint: no such file"});
+}
+
+TEST(Checkpoint, RefusesAnAbsurdCountEvenWithAValidChecksum) {
+  // A writer bug or a forged file: the count must not trigger a huge allocation.
+  const fs::path file = temp_file("count.ckpt");
+  fsi::io::write_checkpoint(file, sample_state(), "f");
+  std::string bytes = fsi::test::read_file(file);
+  const std::size_t count_at = 8 + 4 + 4 + 1 + 8 + 8 + 8;  // magic, version, "f", t, step, k
+  for (int i = 0; i < 8; ++i) bytes[count_at + i] = static_cast<char>(0x7f);
+  bytes.resize(bytes.size() - 8);
+  const std::uint64_t sum = fsi::io::fnv1a(bytes.data(), bytes.size());
+  for (int i = 0; i < 8; ++i) bytes += static_cast<char>((sum >> (8 * i)) & 0xff);
+  write_bytes(file, bytes);
+  expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
+                     {"/solution", "values announced"});
+}
+
+TEST(Checkpoint, ReportsAnUnwritableTarget) {
+  expect_input_error(
+      [] { fsi::io::write_checkpoint("/nonexistent/dir/x.ckpt", sample_state(), "f"); },
+      {"/nonexistent/dir/x.ckpt", "cannot write"});
+}
+
+}  // namespace
