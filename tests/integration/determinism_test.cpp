@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
+
+#include <fsi/error.hpp>
 
 #include "test_scenarios.hpp"
 
@@ -17,9 +20,11 @@ TEST(Determinism, RestoredStateContinuesBitIdentically) {
 
   fsi::Engine first(s);
   for (int i = 0; i < n; ++i) ASSERT_TRUE(first.step().converged);
-  const fsi::State saved = first.state();
+  // Through a checkpoint file, as a user would.
+  const std::filesystem::path file = std::filesystem::path(FSI_BINARY_DIR) / "determinism.ckpt";
+  fsi::save_checkpoint(first, file);
   fsi::Engine resumed(s);
-  resumed.set_state(saved);
+  fsi::load_checkpoint(resumed, file);
   for (int i = 0; i < n; ++i) ASSERT_TRUE(resumed.step().converged);
 
   const Eigen::VectorXd& a = straight.state().solution;
@@ -29,6 +34,23 @@ TEST(Determinism, RestoredStateContinuesBitIdentically) {
   EXPECT_EQ(straight.state().time_s, resumed.state().time_s);
   EXPECT_EQ(straight.state().corner_sign, resumed.state().corner_sign);
   EXPECT_EQ(straight.state().edge_cut, resumed.state().edge_cut);
+}
+
+TEST(Determinism, CheckpointOfAnotherScenarioIsRefused) {
+  fsi::Scenario s = fsi::testing::coarse_example1();
+  fsi::Engine a(s);
+  a.step();
+  const std::filesystem::path file = std::filesystem::path(FSI_BINARY_DIR) / "other.ckpt";
+  fsi::save_checkpoint(a, file);
+  s.solid.mu_pa *= 2;
+  fsi::Engine b(s);
+  try {
+    fsi::load_checkpoint(b, file);
+    FAIL() << "a checkpoint of another scenario was accepted";
+  } catch (const fsi::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fingerprint"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
 }
 
 TEST(Determinism, TwoRunsAreBitIdentical) {

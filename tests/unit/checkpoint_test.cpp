@@ -10,6 +10,7 @@
 #include <functional>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -44,9 +45,16 @@ fsi::State sample_state() {
   s.solution[2] = std::numeric_limits<double>::infinity();
   s.solution[3] = std::bit_cast<double>(std::uint64_t{0x7ff8000000000abcull});
   s.previous_solution = random_vector(rng, 5 * 40);
-  s.node_xy = random_vector(rng, 2 * 40);
-  s.previous_node_xy = random_vector(rng, 0);
+  s.corner_sign = {-1, 0, 1, 1, -1};
+  s.previous_corner_sign = {};
+  s.edge_cut = {-1.0, 0.25, 1.0 / 3.0};
+  s.previous_edge_cut = {0.5};
   s.functionals = {1e-3, -0.6, 0.4, -0.4, 0.4, 0.01, -0.2, -0.3, 0.001, 0.5026, 1e-9};
+  auto origin = std::make_shared<fsi::FactorizationOrigin>();
+  origin->step_start = s;
+  origin->iterate = random_vector(rng, 5 * 40);
+  origin->time_step_s = 1e-3;
+  s.factorization_origin = origin;
   return s;
 }
 
@@ -72,8 +80,14 @@ TEST(Checkpoint, RoundTripIsBitIdentical) {
   EXPECT_EQ(back.time_step_s, s.time_step_s);
   EXPECT_TRUE(same_bits(back.solution, s.solution));
   EXPECT_TRUE(same_bits(back.previous_solution, s.previous_solution));
-  EXPECT_TRUE(same_bits(back.node_xy, s.node_xy));
-  EXPECT_TRUE(same_bits(back.previous_node_xy, s.previous_node_xy));
+  EXPECT_EQ(back.corner_sign, s.corner_sign);
+  EXPECT_EQ(back.previous_corner_sign, s.previous_corner_sign);
+  EXPECT_EQ(back.edge_cut, s.edge_cut);
+  EXPECT_EQ(back.previous_edge_cut, s.previous_edge_cut);
+  ASSERT_TRUE(back.factorization_origin);
+  EXPECT_TRUE(same_bits(back.factorization_origin->iterate, s.factorization_origin->iterate));
+  EXPECT_TRUE(same_bits(back.factorization_origin->step_start.solution, s.solution));
+  EXPECT_EQ(back.factorization_origin->time_step_s, 1e-3);
   EXPECT_EQ(std::memcmp(&back.functionals, &s.functionals, sizeof s.functionals), 0);
 
   // Writing again over an existing checkpoint gives the same bytes.
@@ -98,7 +112,9 @@ TEST(Checkpoint, RefusesAnotherVersion) {
   bytes[8] = static_cast<char>(fsi::io::kCheckpointVersion + 1);
   write_bytes(file, bytes);
   expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
-                     {file.string(), "/version", "format version 2", "reads version 1"});
+                     {file.string(), "/version",
+                      "format version " + std::to_string(fsi::io::kCheckpointVersion + 1),
+                      "reads version " + std::to_string(fsi::io::kCheckpointVersion)});
 }
 
 TEST(Checkpoint, RefusesTruncatedAndCorruptFiles) {

@@ -13,6 +13,7 @@
 #include "fe/point_locator.hpp"
 #include "fsi/error.hpp"
 #include "interface/body.hpp"
+#include "io/checkpoint.hpp"
 #include "interface/step_mapping.hpp"
 #include "mesh/patch_mesh.hpp"
 #include "solve/newton.hpp"
@@ -28,7 +29,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 struct Engine::Impl {
   explicit Impl(Scenario s)
-      : scenario(std::move(s)),
+      : scenario((validate(s), std::move(s))),
         numerics(scenario.numerics),
         mesh(mesh::build_patch_mesh(scenario.mesh, scenario.walls)),
         buckets(mesh),
@@ -289,6 +290,23 @@ void Engine::set_state(const State& state) {
 
 FieldView Engine::view() const {
   return core::build_field_view(impl_->mesh, impl_->cut_cur, impl_->state, impl_->scenario);
+}
+
+}  // namespace fsi
+
+namespace fsi {
+
+void save_checkpoint(const Engine& engine, const std::filesystem::path& file) {
+  io::write_checkpoint(file, engine.state(), fingerprint(engine.scenario()));
+}
+
+void load_checkpoint(Engine& engine, const std::filesystem::path& file) {
+  const State state = io::read_checkpoint(file, fingerprint(engine.scenario()));
+  try {
+    engine.set_state(state);
+  } catch (const InputError& e) {
+    throw InputError(file.string(), e.key(), e.why());
+  }
 }
 
 }  // namespace fsi

@@ -43,6 +43,14 @@ class Writer {
     u64(static_cast<std::uint64_t>(v.size()));
     for (Eigen::Index i = 0; i < v.size(); ++i) f64(v[i]);
   }
+  void vector(const std::vector<double>& v) {
+    u64(static_cast<std::uint64_t>(v.size()));
+    for (double x : v) f64(x);
+  }
+  void signs(const std::vector<std::int8_t>& v) {
+    u64(static_cast<std::uint64_t>(v.size()));
+    for (std::int8_t x : v) bytes += static_cast<char>(x);
+  }
 
  private:
   void little_endian(std::uint64_t v, int count) {
@@ -77,6 +85,21 @@ class Reader {
     for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = f64(what);
     return v;
   }
+  std::vector<double> doubles(const char* what) {
+    const Eigen::VectorXd v = vector(what);
+    return std::vector<double>(v.data(), v.data() + v.size());
+  }
+  std::vector<std::int8_t> signs(const char* what) {
+    const std::uint64_t count = u64(what);
+    if (count > bytes_.size() - offset_) {
+      throw InputError(file_, std::string("/") + what,
+                       "truncated or corrupt: " + std::to_string(count) + " signs announced");
+    }
+    std::vector<std::int8_t> v(count);
+    for (std::uint64_t i = 0; i < count; ++i) v[i] = static_cast<std::int8_t>(bytes_[offset_ + i]);
+    offset_ += count;
+    return v;
+  }
   std::size_t offset() const { return offset_; }
 
  private:
@@ -103,25 +126,51 @@ class Reader {
   std::size_t offset_ = 0;
 };
 
+/// The level data of a state (everything but functionals and origin).
+void write_levels(Writer& w, const State& state) {
+  w.f64(state.time_s);
+  w.u64(static_cast<std::uint64_t>(state.step));
+  w.f64(state.time_step_s);
+  w.vector(state.solution);
+  w.vector(state.previous_solution);
+  w.signs(state.corner_sign);
+  w.signs(state.previous_corner_sign);
+  w.vector(state.edge_cut);
+  w.vector(state.previous_edge_cut);
+}
+
+void read_levels(Reader& r, State& state) {
+  state.time_s = r.f64("time_s");
+  state.step = static_cast<long>(r.u64("step"));
+  state.time_step_s = r.f64("time_step_s");
+  state.solution = r.vector("solution");
+  state.previous_solution = r.vector("previous_solution");
+  state.corner_sign = r.signs("corner_sign");
+  state.previous_corner_sign = r.signs("previous_corner_sign");
+  state.edge_cut = r.doubles("edge_cut");
+  state.previous_edge_cut = r.doubles("previous_edge_cut");
+}
+
 }  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const State& state,
                       const std::string& scenario_fingerprint) {
   Writer w;
-  w.bytes.reserve(
-      64 + 8 * static_cast<std::size_t>(state.solution.size() * 2 + state.node_xy.size() * 2));
+  w.bytes.reserve(128 + 8 * static_cast<std::size_t>(state.solution.size() * 5));
   w.bytes.append(kMagic.data(), kMagic.size());
   w.u32(kCheckpointVersion);
   w.text(scenario_fingerprint);
-  w.f64(state.time_s);
-  w.u64(static_cast<std::uint64_t>(state.step));
-  w.f64(state.time_step_s);
-  for (const Eigen::VectorXd* v :
-       {&state.solution, &state.previous_solution, &state.node_xy, &state.previous_node_xy}) {
-    w.vector(*v);
-  }
+  write_levels(w, state);
   Functionals functionals = state.functionals;
   for (const double* value : functional_fields(functionals)) w.f64(*value);
+  // Where the reused LU factorization came from (bit-identical continuation).
+  const FactorizationOrigin* origin = state.factorization_origin.get();
+  w.u32(origin ? 1 : 0);
+  if (origin) {
+    write_levels(w, origin->step_start);
+    w.vector(origin->iterate);
+    w.f64(origin->time_step_s);
+  }
   w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
 
   write_file_atomically(file, w.bytes);
@@ -173,14 +222,15 @@ State read_checkpoint(const std::filesystem::path& file, const std::string& expe
   }
 
   State state;
-  state.time_s = r.f64("time_s");
-  state.step = static_cast<long>(r.u64("step"));
-  state.time_step_s = r.f64("time_step_s");
-  state.solution = r.vector("solution");
-  state.previous_solution = r.vector("previous_solution");
-  state.node_xy = r.vector("node_xy");
-  state.previous_node_xy = r.vector("previous_node_xy");
+  read_levels(r, state);
   for (double* value : functional_fields(state.functionals)) *value = r.f64("functionals");
+  if (r.u32("factorization_origin") != 0) {
+    auto origin = std::make_shared<FactorizationOrigin>();
+    read_levels(r, origin->step_start);
+    origin->iterate = r.vector("factorization_origin/iterate");
+    origin->time_step_s = r.f64("factorization_origin/time_step_s");
+    state.factorization_origin = std::move(origin);
+  }
   if (r.offset() != body) {  // the reader never passes `body`
     throw InputError(
         name, "/checksum",

@@ -21,7 +21,7 @@
 namespace fsi::io {
 
 /// Bump when the layout or the meaning of a stored field changes.
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;
 
 /// Writes `state` to `file` atomically (a temporary file in the same folder, then a
 /// rename): a crash mid-write leaves the previous checkpoint intact. Throws InputError if
