@@ -75,9 +75,11 @@ void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& 
 
   // CIP pressure stabilization: linear in p and fixed during the step.
   cip_ = pattern_;
-  const double gamma = scenario_.numerics.cip_gamma / (coefficients_.rho_f * coefficients_.nu_f);
+  const double mu = coefficients_.rho_f * coefficients_.nu_f;
+  const double gamma = scenario_.numerics.cip_gamma / mu;
+  const double transient = coefficients_.rho_f / (time_step_s * mu);
   forms::add_pressure_stabilization(mesh_, cut, fe::build_stabilization_edges(cut), gamma,
-                                    kFieldsPerNode, kP, cip_);
+                                    kFieldsPerNode, kP, cip_, transient);
   build_open_sides();
   build_contact_forces();
 }

@@ -15,14 +15,15 @@ void add(solve::SparseMatrix& a, int row, int col, double v) {
 
 void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& cut,
                                 const std::vector<fe::StabilizationEdge>& edges, double gamma,
-                                int stride, int field, solve::SparseMatrix& a) {
+                                int stride, int field, solve::SparseMatrix& a,
+                                double transient_scale) {
   for (const fe::StabilizationEdge& se : edges) {
     const fe::SubElement& e1 = cut.elements[se.element1];
     const fe::SubElement& e2 = cut.elements[se.element2];
     const bool fluid1 = e1.phase == Phase::fluid, fluid2 = e2.phase == Phase::fluid;
     if (!fluid1 && !fluid2) continue;
     const double hp = std::max(mesh.patches[e1.patch].size_m, mesh.patches[e2.patch].size_m);
-    const double scale = gamma * hp * hp;
+    const double scale = gamma * hp * hp / (1.0 + transient_scale * hp * hp);
     for (int q = 0; q < 2; ++q) {
       const double w = scale * se.weight[q];
       if (se.in_cut_patch) {
