@@ -1,0 +1,34 @@
+# Reduces one run's functionals.csv (fsi-movie output) to the three Table 12.1 values.
+#   awk -f tools/example1-table.awk -v nodes=4225 -v k=2e-3 functionals.csv
+# Prints: nodes,k,min_distance_first_contact,max_distance_first_rebound,mass_error_t3
+#
+# First contact: the approach ends with the first local minimum of the distance below
+# 5 cm, confirmed once the ball has risen 0.5 mm above it (or the run ends). First
+# rebound: the largest distance after that, until the ball has come back down half way
+# between that maximum and the first minimum. Mass error: the row nearest t = 3 s.
+BEGIN { FS = ","; state = "approach"; dmin = 1e300; dmax = -1; best_dt = 1e300; mass = "" }
+NR == 1 {
+  for (i = 1; i <= NF; ++i) col[$i] = i
+  if (!("time_s" in col) || !("min_distance_m" in col) || !("mass_error" in col)) {
+    print "example1-table: " FILENAME " lacks time_s/min_distance_m/mass_error columns" > "/dev/stderr"
+    exit 2
+  }
+  next
+}
+{
+  t = $col["time_s"] + 0; d = $col["min_distance_m"] + 0
+  if (state == "approach") {
+    if (d < dmin) { dmin = d; tmin = t }
+    if (dmin < 0.05 && d > dmin + 5e-4) state = "rebound"
+  } else if (state == "rebound") {
+    if (d > dmax) { dmax = d; tmax = t }
+    if (dmax > dmin && d < dmin + 0.5 * (dmax - dmin)) state = "done"
+  }
+  if ((t - 3.0) ^ 2 < best_dt) { best_dt = (t - 3.0) ^ 2; mass = $col["mass_error"] }
+}
+END {
+  if (best_dt > 1e-4) mass = ""   # the run did not reach t = 3 s
+  printf "%s,%s,%s,%s,%s\n", nodes, k, (dmin < 1e300 ? sprintf("%.6e", dmin) : ""),
+         (dmax >= 0 ? sprintf("%.6e", dmax) : ""), mass
+  printf "# first contact at t = %.4f s, first rebound maximum at t = %.4f s\n", tmin, tmax > "/dev/stderr"
+}
