@@ -71,6 +71,9 @@ Eigen::VectorXd SparseLU::solve(const Eigen::VectorXd& b) const {
   double control[UMFPACK_CONTROL];
   double info[UMFPACK_INFO];
   umfpack_di_defaults(control);
+  // No iterative refinement: Newton corrects the solution anyway, and each refinement
+  // step costs another full forward/backward solve.
+  control[UMFPACK_IRSTEP] = 0;
   umfpack_di_solve(UMFPACK_A, outer_.data(), inner_.data(), values_.data(), x.data(), b.data(),
                    numeric_, control, info);
   return x;
