@@ -237,7 +237,7 @@ TEST(ScenarioJson, RejectsInconsistentGeometry) {
                      {"[0, 2] m"});
   // The ball (r = 0.4 at the origin) must fit.
   expect_parse_error(box_mesh(piece(-0.3, 1, 8), y), "/body/radius_m",
-                     {"lies inside the domain [-0.3, 1] x [-1, 0.5] m", "got 0.4"});
+                     {"lies inside the meshed domain", "bounding box [-0.3, 1] x [-1, 0.5] m", "got 0.4"});
   expect_parse_error(R"({"body": {"center_m": [5, 0]}})", "/body/center_m",
                      {"inside a mesh block", "[-1, 1] x [-1, 0.5]", "got (5, 0)"});
   expect_parse_error(R"({"walls": [[[0, -0.2], [1, -0.2]]]})", "/body/center_m",
