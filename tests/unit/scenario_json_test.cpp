@@ -322,3 +322,29 @@ TEST(ScenarioJson, ValidateNamesTheSourceOfABuiltScenario) {
 }
 
 }  // namespace
+
+namespace {
+
+// An L-shaped domain: [-1, 1] x [-1, 0] plus [-1, 0] x [0, 1] (two blocks, node to node).
+fsi::Scenario l_shaped(fsi::Point2 center) {
+  fsi::Scenario s = fsi::example1_scenario();
+  fsi::BlockSpec lower, upper;
+  lower.x = {fsi::AxisPiece{-1, 0, 4, 0, 0}, fsi::AxisPiece{0, 1, 4, 0, 0}};
+  lower.y = {fsi::AxisPiece{-1, 0, 4, 0, 0}};
+  upper.x = {fsi::AxisPiece{-1, 0, 4, 0, 0}};
+  upper.y = {fsi::AxisPiece{0, 1, 4, 0, 0}};
+  s.mesh.blocks = {lower, upper};
+  s.body.center_m = center;
+  s.body.radius_m = 0.3;
+  return s;
+}
+
+TEST(ScenarioValidate, BallMustLieInTheUnionOfTheBlocks) {
+  EXPECT_NO_THROW(fsi::validate(l_shaped({-0.5, 0.2})));  // crosses the block border y = 0
+  EXPECT_NO_THROW(fsi::validate(l_shaped({0.5, -0.5})));
+  // Inside the bounding box, centre inside a block, but reaching into the missing corner.
+  expect_input_error([] { fsi::validate(l_shaped({0.2, -0.2})); },
+                     {"/body/radius_m", "inside the meshed domain", "outside every block"});
+}
+
+}  // namespace
