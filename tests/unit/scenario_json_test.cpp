@@ -237,7 +237,7 @@ TEST(ScenarioJson, RejectsInconsistentGeometry) {
                      {"[0, 2] m"});
   // The ball (r = 0.4 at the origin) must fit.
   expect_parse_error(box_mesh(piece(-0.3, 1, 8), y), "/body/radius_m",
-                     {"lies inside the domain [-0.3, 1] x [-1, 0.5] m", "got 0.4"});
+                     {"lies inside the meshed domain", "bounding box [-0.3, 1] x [-1, 0.5] m", "got 0.4"});
   expect_parse_error(R"({"body": {"center_m": [5, 0]}})", "/body/center_m",
                      {"inside a mesh block", "[-1, 1] x [-1, 0.5]", "got (5, 0)"});
   expect_parse_error(R"({"walls": [[[0, -0.2], [1, -0.2]]]})", "/body/center_m",
@@ -319,6 +319,32 @@ TEST(ScenarioJson, ValidateNamesTheSourceOfABuiltScenario) {
   s = fsi::example1_scenario();
   s.numerics.failure_policy = static_cast<fsi::FailurePolicy>(7);
   expect_input_error([&] { fsi::validate(s); }, {"/numerics/failure_policy", "enum value 7"});
+}
+
+}  // namespace
+
+namespace {
+
+// An L-shaped domain: [-1, 1] x [-1, 0] plus [-1, 0] x [0, 1] (two blocks, node to node).
+fsi::Scenario l_shaped(fsi::Point2 center) {
+  fsi::Scenario s = fsi::example1_scenario();
+  fsi::BlockSpec lower, upper;
+  lower.x = {fsi::AxisPiece{-1, 0, 4, 0, 0}, fsi::AxisPiece{0, 1, 4, 0, 0}};
+  lower.y = {fsi::AxisPiece{-1, 0, 4, 0, 0}};
+  upper.x = {fsi::AxisPiece{-1, 0, 4, 0, 0}};
+  upper.y = {fsi::AxisPiece{0, 1, 4, 0, 0}};
+  s.mesh.blocks = {lower, upper};
+  s.body.center_m = center;
+  s.body.radius_m = 0.3;
+  return s;
+}
+
+TEST(ScenarioValidate, BallMustLieInTheUnionOfTheBlocks) {
+  EXPECT_NO_THROW(fsi::validate(l_shaped({-0.5, 0.2})));  // crosses the block border y = 0
+  EXPECT_NO_THROW(fsi::validate(l_shaped({0.5, -0.5})));
+  // Inside the bounding box, centre inside a block, but reaching into the missing corner.
+  expect_input_error([] { fsi::validate(l_shaped({0.2, -0.2})); },
+                     {"/body/radius_m", "inside the meshed domain", "outside every block"});
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 
 #include "forms/pressure_stabilization.hpp"
 #include "fsi/state.hpp"
-#include "interface/step_mapping.hpp"
+#include "mesh/walls.hpp"
 
 namespace fsi::core {
 namespace {
@@ -154,7 +154,7 @@ void FsiSystem::build_contact_forces() {
     if (n.dot(0.5 * (seg.a + seg.b) - centroid) < 0.0) n = -n;
     for (double s : {0.5 - g, 0.5 + g}) {
       const mesh::Vec2 x = seg.a + s * d;
-      const double dist = interface::wall_distance(scenario_.walls, x);
+      const double dist = mesh::distance_to_walls(scenario_.walls, x).distance_m;
       if (dist >= dist0) continue;
       const double pc = gamma_c * (dist0 - dist) / std::max(dist, 1e-3 * dist0);
       max_contact_pressure_ = std::max(max_contact_pressure_, pc);

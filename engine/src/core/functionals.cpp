@@ -5,7 +5,7 @@
 #include <limits>
 #include <numbers>
 
-#include "interface/step_mapping.hpp"
+#include "mesh/walls.hpp"
 
 namespace fsi::core {
 
@@ -19,7 +19,7 @@ Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geo
   f.top_y_m = f.right_x_m = -inf;
   for (const fe::InterfaceSegment& s : geometry.interface)
     for (const mesh::Vec2& x : {s.a, s.b}) {
-      f.min_distance_m = std::min(f.min_distance_m, interface::wall_distance(scenario.walls, x));
+      f.min_distance_m = std::min(f.min_distance_m, mesh::distance_to_walls(scenario.walls, x).distance_m);
       f.bottom_y_m = std::min(f.bottom_y_m, x.y());
       f.top_y_m = std::max(f.top_y_m, x.y());
       f.left_x_m = std::min(f.left_x_m, x.x());

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "fsi/state.hpp"
 #include "interface/body.hpp"
+#include "mesh/walls.hpp"
 
 namespace fsi::interface {
 namespace {
@@ -32,22 +32,6 @@ Vec2 displacement(const fe::CutMesh& cut, const fe::Location& loc, const Eigen::
 }
 
 }  // namespace
-
-double wall_distance(const std::vector<Segment2>& walls, const Vec2& x, int* which) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const Vec2 a(walls[w].a.x, walls[w].a.y), b(walls[w].b.x, walls[w].b.y);
-    const Vec2 d = b - a;
-    const double len2 = d.squaredNorm();
-    const double t = len2 > 0.0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-    const double dist = (a + t * d - x).norm();
-    if (dist < best) {
-      best = dist;
-      if (which) *which = static_cast<int>(w);
-    }
-  }
-  return best;
-}
 
 MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuckets& buckets,
                                 const fe::CutMesh& next, const fe::QuadratureTable& quadrature,
@@ -83,7 +67,7 @@ MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuck
                          options.delta_patches * h);
         // The chapter's contact treatment: T_m = id in the fluid gap near a wall.
         const double gap = options.identity_gap_m > 0.0 ? options.identity_gap_m : mesh.patches[p].min_size_m;
-        if (g > 0.0 && fluid && wall_distance(walls, x) < gap) g = 0.0;
+        if (g > 0.0 && fluid && mesh::distance_to_walls(walls, x).distance_m < gap) g = 0.0;
         Vec2 t = x;
         if (g > 0.0) {
           // (12.4): y - u_prev(y) = x - u_cur(x), Newton from y0 = x - u_cur(x) + u_prev(x).

@@ -44,7 +44,4 @@ MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuck
                                 const std::vector<Segment2>& walls, const MappingOptions& options,
                                 std::vector<forms::OldValues>& old);
 
-/// Distance from x to the nearest wall segment [m] (infinity without walls).
-double wall_distance(const std::vector<Segment2>& walls, const mesh::Vec2& x, int* which = nullptr);
-
 }  // namespace fsi::interface

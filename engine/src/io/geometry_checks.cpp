@@ -2,6 +2,7 @@
 // walls, and where the ball starts.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -208,11 +209,22 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
     fail(at / "body" / "center_m",
          "must lie inside a mesh block (domain bounding box " + box + " m), got " + point_text(c));
   }
-  const double room = std::min({c.x - lo.x, hi.x - c.x, c.y - lo.y, hi.y - c.y});
-  if (!(r < room)) {
-    fail(at / "body" / "radius_m", "must be in (0, " + number_text(room) + ") m so the ball at " +
-                                       point_text(c) + " lies inside the domain " + box +
-                                       " m, got " + number_text(r));
+  // The domain is the union of the blocks, which need not be a rectangle (the stairs):
+  // every point of the ball's boundary must lie in some block. Points 0.5 degree apart
+  // miss at most r (1 - cos 0.25 deg) ~ 1e-5 r of a block corner poking into the ball.
+  constexpr int kSamples = 720;
+  for (int i = 0; i < kSamples; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / kSamples;
+    const Point2 p{c.x + r * std::cos(a), c.y + r * std::sin(a)};
+    const bool covered = std::any_of(quads.begin(), quads.end(),
+                                     [&](const auto& quad) { return inside(quad, p); });
+    if (!covered) {
+      fail(at / "body" / "radius_m",
+           "must be small enough that the ball at " + point_text(c) +
+               " lies inside the meshed domain (the union of the blocks, bounding box " + box +
+               " m); its boundary point " + point_text(p) + " lies outside every block, got " +
+               number_text(r));
+    }
   }
   for (std::size_t w = 0; w < s.walls.size(); ++w) {
     const double d = distance_to_segment(c, s.walls[w]);

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "mesh/axis.hpp"
+#include "mesh/walls.hpp"
 
 namespace fsi::mesh {
 namespace {
@@ -37,14 +38,6 @@ class NodeMerger {
   double tol_;
   std::unordered_map<long long, std::vector<int>> buckets_;
 };
-
-double point_segment_distance(const Vec2& p, const Segment2& s) {
-  const Vec2 a(s.a.x, s.a.y), b(s.b.x, s.b.y);
-  const Vec2 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
-}
 
 /// Position of reference point (s, t) in [0,1]^2 of a block.
 struct BlockMap {
@@ -142,8 +135,8 @@ PatchMesh build_patch_mesh(const MeshSpec& spec, const std::vector<Segment2>& wa
     for (int n : {e.a, e.mid, e.b}) mesh.on_boundary[n] = 1;
     const double len = (mesh.nodes[e.b] - mesh.nodes[e.a]).norm();
     for (std::size_t w = 0; w < walls.size(); ++w) {
-      if (point_segment_distance(mesh.nodes[e.a], walls[w]) < 1e-9 * len &&
-          point_segment_distance(mesh.nodes[e.b], walls[w]) < 1e-9 * len) {
+      if (distance_to_segment(walls[w], mesh.nodes[e.a]) < 1e-9 * len &&
+          distance_to_segment(walls[w], mesh.nodes[e.b]) < 1e-9 * len) {
         e.wall = static_cast<int>(w);
         for (int n : {e.a, e.mid, e.b}) mesh.on_wall[n] = 1;
         break;

@@ -1,0 +1,35 @@
+# Reduces one run's functionals.csv (fsi-movie output) of a ball bouncing on the ground to
+#   first_rebound_max,second_rebound_max,rest_distance
+#   awk -f tools/study-bounce.awk functionals.csv
+#
+# A contact ends with a local minimum of min_distance_m below 5 cm, confirmed once the
+# ball has risen 0.5 mm above it; the rebound maximum is the largest distance after that,
+# until the ball has come back down half way towards that minimum (the same rule as
+# tools/example1-table.awk). rest_distance is the distance in the last row. A value is
+# empty when the run did not get that far (e.g. the ball stuck in real contact).
+BEGIN { FS = ","; n = 0; state = "approach"; dmin = 1e300; dmax = -1 }
+NR == 1 {
+  for (i = 1; i <= NF; ++i) col[$i] = i
+  if (!("min_distance_m" in col)) {
+    print "study-bounce: " FILENAME " lacks the min_distance_m column" > "/dev/stderr"; exit 2
+  }
+  next
+}
+{
+  d = $col["min_distance_m"] + 0; last = $col["min_distance_m"]
+  if (state == "approach") {
+    if (d < dmin) dmin = d
+    if (dmin < 0.05 && d > dmin + 5e-4) { state = "rebound"; dmax = d }
+  } else if (state == "rebound") {
+    if (d > dmax) dmax = d
+    if (d < dmin + 0.5 * (dmax - dmin)) {
+      rebound[++n] = dmax
+      if (n == 2) state = "done"; else { state = "approach"; dmin = d; dmax = -1 }
+    }
+  }
+}
+END {
+  if (state == "rebound" && dmax > dmin + 5e-4) rebound[++n] = dmax  # still rising at the end
+  printf "%s,%s,%s\n", (1 in rebound ? sprintf("%.6e", rebound[1]) : ""),
+         (2 in rebound ? sprintf("%.6e", rebound[2]) : ""), last
+}

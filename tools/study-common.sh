@@ -1,0 +1,60 @@
+# Shared by tools/study-{materials,contact,stairs} (sourced, not run): checks the apps,
+# runs fsi-movie headless in parallel (skipping finished runs) and reads the events of
+# a run's summary.json.
+#
+# A run is one line "NAME SCENARIO [--set KEY=VALUE ...]"; its output goes to
+# $study_out/NAME/{functionals.csv,summary.json,log.txt}.
+
+study_apps_or_die() {
+  [ -n "${FSI_STUDY_NO_BUILD:-}" ] || tools/build >/dev/null
+  local app
+  for app in fsi-movie fsi-plot; do
+    if [ ! -x "build/apps/$app" ]; then
+      echo "$0: build/apps/$app is missing (apps/$app.cpp not in this tree or not built);" \
+           "build it with tools/build first" >&2
+      exit 3
+    fi
+  done
+}
+
+# study_run_one END_TIME NAME SCENARIO [--set ...]: one run unless it already finished.
+study_run_one() {
+  local end_time=$1 name=$2 scenario=$3; shift 3
+  local dir="$study_out/$name"
+  if [ -f "$dir/summary.json" ] && ! grep -q '"interrupted": *true' "$dir/summary.json"; then
+    echo "reusing $dir"; return 0
+  fi
+  mkdir -p "$dir"
+  local start=$SECONDS
+  if OPENBLAS_NUM_THREADS=1 build/apps/fsi-movie "$scenario" "$dir" "$@" --end-time "$end_time" \
+       --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
+    echo "finished $dir in $((SECONDS - start)) s"
+  else
+    echo "FAILED $dir (exit $?, see $dir/log.txt)" >&2
+  fi
+}
+
+# study_run_all JOBS END_TIME < lines: the runs, JOBS at a time.
+study_run_all() {
+  local jobs=$1 end_time=$2
+  export -f study_run_one; export study_out
+  # Each line becomes the arguments of one study_run_one call (words split by the shell).
+  xargs -P "$jobs" -L 1 bash -c 'study_run_one "$0" "$@"' "$end_time"
+}
+
+# study_contacts SUMMARY_JSON: the real-contact events as "wall@time;wall@time...", one per
+# touch-down: the engine reports every step the body touches a wall, so consecutive
+# reports on the same wall (less than 0.01 s apart) are one contact.
+study_contacts() {
+  [ -f "$1" ] || return 0
+  grep -o '{[^{}]*"kind": *"real_contact"[^{}]*}' "$1" |
+    sed -E 's/.*"time_s": *([-0-9.eE+]+).*"wall": *(-?[0-9]+).*/\2 \1/' |
+    awk '{ if ($1 != wall || $2 - last > 0.01) { out = out (n++ ? ";" : "") $1 "@" $2 }
+           wall = $1; last = $2 }
+         END { print out }'
+}
+
+# study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).
+study_first_contact_time() {
+  study_contacts "$1" | awk -F';' 'NF { split($1, a, "@"); print a[2] }'
+}
