@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "core/field_view_builder.hpp"
@@ -220,6 +221,11 @@ struct Engine::Impl {
     StepReport report;
     double k = numerics.time_step_s;
     const fe::QuadratureTable quad = fe::build_quadrature(cut_next);
+    // With halve_step, the attempt that reduced its residual most (relative to its own
+    // start) is kept: when every halving fails too, that one is accepted and flagged,
+    // never simply the last (after real contact smaller steps can do worse).
+    Eigen::VectorXd best_x;
+    double best_k = k, best_reduction = std::numeric_limits<double>::infinity();
     for (int attempt_no = 0;; ++attempt_no) {
       Eigen::VectorXd x;
       const solve::NewtonResult r = attempt(k, quad, x, report);
@@ -230,14 +236,23 @@ struct Engine::Impl {
         report.accepted = true;
         break;
       }
-      if (finite && numerics.failure_policy == FailurePolicy::halve_step && attempt_no < numerics.max_halvings) {
-        k *= 0.5;
-        report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
-                                 "Newton did not converge: retrying with k = " + std::to_string(k)});
-        continue;
-      }
       if (finite && numerics.failure_policy == FailurePolicy::halve_step) {
-        accept(std::move(x), k, quad, report);
+        const double reduction = r.norms.empty() ? 1.0 : r.norms.back() / std::max(r.norms.front(), 1e-300);
+        if (reduction < best_reduction) {
+          best_reduction = reduction;
+          best_x = x;
+          best_k = k;
+        }
+        if (attempt_no < numerics.max_halvings) {
+          k *= 0.5;
+          report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
+                                   "Newton did not converge: retrying with k = " + std::to_string(k)});
+          continue;
+        }
+      }
+      if (best_x.size() > 0) {
+        k = best_k;
+        accept(std::move(best_x), k, quad, report);
         report.accepted = true;
         break;
       }
