@@ -3,7 +3,7 @@
 # Prints: nodes,k,min_distance_first_contact,max_distance_first_rebound,mass_error_t3
 #
 # First contact: the approach ends with the first local minimum of the distance below
-# 5 cm, confirmed once the ball has risen 0.5 mm above it (or the run ends). First
+# 5 cm, confirmed once the ball has risen 2 mm above it (or the run ends). First
 # rebound: the largest distance after that, until the ball has come back down half way
 # between that maximum and the first minimum. Mass error: the row nearest t = 3 s.
 BEGIN { FS = ","; state = "approach"; dmin = 1e300; dmax = -1; best_dt = 1e300; mass = "" }
@@ -19,7 +19,7 @@ NR == 1 {
   t = $col["time_s"] + 0; d = $col["min_distance_m"] + 0
   if (state == "approach") {
     if (d < dmin) { dmin = d; tmin = t }
-    if (dmin < 0.05 && d > dmin + 5e-4) state = "rebound"
+    if (dmin < 0.05 && d > dmin + 2e-3) state = "rebound"
   } else if (state == "rebound") {
     if (d > dmax) { dmax = d; tmax = t }
     if (dmax > dmin && d < dmin + 0.5 * (dmax - dmin)) state = "done"
