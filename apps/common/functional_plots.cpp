@@ -1,7 +1,9 @@
 // The four plots of a run. Each is one PlotSpec: a series picked out of the history.
 #include "functional_plots.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include <fsi/plot.hpp>
@@ -27,6 +29,25 @@ std::size_t positive_count(const render::PlotSpec& spec) {
   std::size_t n = 0;
   for (double y : spec.series.front().y) n += (std::isfinite(y) && y > 0) ? 1 : 0;
   return n;
+}
+
+/// On a log axis, a distance of 1e-17 m (rounding at real contact) would squeeze the
+/// approach into the top of the plot: values below `fraction` times the largest are
+/// drawn at that floor, and the legend says so.
+void floor_small_values(render::PlotSpec& spec, double fraction) {
+  render::PlotSeries& s = spec.series.front();
+  double largest = 0;
+  for (double y : s.y) largest = std::isfinite(y) ? std::max(largest, y) : largest;
+  const double floor = fraction * largest;
+  bool floored = false;
+  for (double& y : s.y) {
+    if (std::isfinite(y) && y < floor) y = floor, floored = true;
+  }
+  if (floored) {
+    char note[64];
+    std::snprintf(note, sizeof note, " (< %.1e m drawn at it)", floor);
+    s.label += note;
+  }
 }
 
 }  // namespace
@@ -58,6 +79,7 @@ std::vector<std::filesystem::path> write_functional_plots(render::Renderer& rend
   // enough positive values to draw (real contact gives distance 0, t = 0 mass error 0).
   plots[0].spec.log_y = positive_count(plots[0].spec) >= 2;
   plots[3].spec.log_y = positive_count(plots[3].spec) >= 2;
+  if (plots[0].spec.log_y) floor_small_values(plots[0].spec, 1e-4);
   std::vector<std::filesystem::path> written;
   for (const Plot& p : plots) {
     const std::filesystem::path file = folder / p.file;
