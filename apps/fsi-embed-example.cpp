@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-
 #include <fsi/engine.hpp>    // fsi::Engine, StepReport, checkpoints
 #include <fsi/output.hpp>    // VTU/PVD and functionals CSV writers
 #include <fsi/png.hpp>       // fsi::render::write_png
@@ -51,10 +50,10 @@ int main(int argc, char** argv) {
     // 3. The chapter's quantities of interest travel with the state.
     const fsi::Functionals& f = engine.state().functionals;
     std::printf("t = %.3f s after %ld steps\n", engine.state().time_s, engine.state().step);
-    std::printf("  min distance to the ground %.4f m, centroid (%.4f, %.4f) m\n",
-                f.min_distance_m, f.centroid_x_m, f.centroid_y_m);
-    std::printf("  mean velocity (%.4f, %.4f) m/s, mass error %.2e\n", f.mean_vx_mps,
-                f.mean_vy_mps, f.mass_error);
+    std::printf("  min distance to the ground %.4f m, centroid (%.4f, %.4f) m\n", f.min_distance_m,
+                f.centroid_x_m, f.centroid_y_m);
+    std::printf("  mean velocity (%.4f, %.4f) m/s, mass error %.2e\n", f.mean_vx_mps, f.mean_vy_mps,
+                f.mass_error);
 
     // 4. Pictures: the renderer only ever sees a FieldView (a copy of mesh and fields).
     const fsi::FieldView view = engine.view();

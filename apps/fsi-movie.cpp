@@ -22,10 +22,9 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <fsi/error.hpp>
 #include <string>
 #include <vector>
-
-#include <fsi/error.hpp>
 
 #include "frame_options.hpp"
 #include "interrupt_flag.hpp"
@@ -68,7 +67,8 @@ Arguments parse_arguments(int argc, char** argv) {
     if (opt == "--set") {
       a.overrides.push_back(fsi::app::parse_override(value()));
     } else if (opt == "--frame-every") {
-      a.overrides.push_back({"/output/frame_every", fsi::app::parse_int(value(), 1, 1000000, "command line", opt)});
+      a.overrides.push_back(
+          {"/output/frame_every", fsi::app::parse_int(value(), 1, 1000000, "command line", opt)});
     } else if (opt == "--field") {
       const std::string f = value();
       fsi::app::parse_field(f, "command line", opt);
@@ -79,9 +79,11 @@ Arguments parse_arguments(int argc, char** argv) {
       a.overrides.push_back({"/output/width_px", w});
       a.overrides.push_back({"/output/height_px", h});
     } else if (opt == "--fps") {
-      a.overrides.push_back({"/output/fps", fsi::app::parse_int(value(), 1, 240, "command line", opt)});
+      a.overrides.push_back(
+          {"/output/fps", fsi::app::parse_int(value(), 1, 240, "command line", opt)});
     } else if (opt == "--end-time") {
-      a.overrides.push_back({"/numerics/end_time_s", fsi::app::parse_number(value(), "command line", opt)});
+      a.overrides.push_back(
+          {"/numerics/end_time_s", fsi::app::parse_number(value(), "command line", opt)});
     } else if (opt == "--zoom") {
       a.movie.zoom = fsi::app::parse_zoom(value(), "command line", opt);
     } else if (opt == "--mesh") {
@@ -101,8 +103,9 @@ Arguments parse_arguments(int argc, char** argv) {
     }
   }
   if (positional.size() != 2) {
-    throw fsi::InputError("command line", "", "need SCENARIO.json and OUTDIR, got " +
-                                                  std::to_string(positional.size()) + " argument(s)");
+    throw fsi::InputError(
+        "command line", "",
+        "need SCENARIO.json and OUTDIR, got " + std::to_string(positional.size()) + " argument(s)");
   }
   a.scenario = positional[0];
   a.movie.out_dir = positional[1];

@@ -13,14 +13,14 @@
 //   fsi-step assets/scenarios/ball_drop.json                    # type: step 10, functionals
 //   printf 'step 5\nrender out/t.png field=p\nquit\n' | fsi-step assets/scenarios/ball_drop.json
 //   fsi-step tests/data/tiny_drop.json < tests/data/fsi_step_session.txt
+#include <unistd.h>
+
 #include <cstdio>
 #include <exception>
+#include <fsi/error.hpp>
 #include <iostream>
 #include <string>
-#include <unistd.h>
 #include <vector>
-
-#include <fsi/error.hpp>
 
 #include "scenario_overrides.hpp"
 #include "step_session.hpp"
@@ -28,7 +28,8 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: fsi-step SCENARIO.json [--set KEY=VALUE ...]   (commands on stdin, 'help' lists them)\n";
+    "usage: fsi-step SCENARIO.json [--set KEY=VALUE ...]   (commands on stdin, 'help' lists "
+    "them)\n";
 
 int usage(const std::string& why) {
   std::fprintf(stderr, "fsi-step: %s\n%s", why.c_str(), kUsage);

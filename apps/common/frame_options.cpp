@@ -4,9 +4,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <stdexcept>
-
 #include <fsi/error.hpp>
+#include <stdexcept>
 
 namespace fsi::app {
 
@@ -64,7 +63,8 @@ void parse_size(const std::string& text, const std::string& origin, const std::s
                 int& width, int& height) {
   const std::size_t x = text.find('x');
   if (x == std::string::npos) {
-    throw InputError(origin, option, "wants WIDTHxHEIGHT in pixels, e.g. 1280x720, got '" + text + "'");
+    throw InputError(origin, option,
+                     "wants WIDTHxHEIGHT in pixels, e.g. 1280x720, got '" + text + "'");
   }
   width = parse_int(text.substr(0, x), 16, 8192, origin, option);
   height = parse_int(text.substr(x + 1), 16, 8192, origin, option);

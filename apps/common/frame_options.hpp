@@ -3,9 +3,8 @@
 /// The picture options both apps accept, parsed from their text forms:
 /// field (vx|vy|vmag|p|umag), zoom "x0,y0,x1,y1" [m], size "WxH" [px], mesh 0|1.
 /// Each parser throws fsi::InputError(origin, option, why) on bad text.
-#include <string>
-
 #include <fsi/renderer.hpp>
+#include <string>
 
 namespace fsi::app {
 

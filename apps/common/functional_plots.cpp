@@ -4,10 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
-
 #include <fsi/plot.hpp>
 #include <fsi/png.hpp>
+#include <functional>
 
 namespace fsi::app {
 namespace {

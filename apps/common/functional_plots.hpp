@@ -6,11 +6,10 @@
 ///   plot_velocity.png  solid-averaged vertical velocity
 ///   plot_mass.png      relative mass error j_mass (log y)
 #include <filesystem>
-#include <string>
-#include <vector>
-
 #include <fsi/renderer.hpp>
 #include <fsi/state.hpp>
+#include <string>
+#include <vector>
 
 namespace fsi::app {
 

@@ -2,9 +2,8 @@
 /// \file functionals_json.hpp
 /// The chapter's functionals as a JSON object, keys as the CSV columns
 /// (min_distance_m, bottom_y_m, ..., mass_error), values in SI units.
-#include <nlohmann/json.hpp>
-
 #include <fsi/state.hpp>
+#include <nlohmann/json.hpp>
 
 namespace fsi::app {
 

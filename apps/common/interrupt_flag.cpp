@@ -1,8 +1,9 @@
 // The signal flag: the handler does nothing but store to a sig_atomic_t.
 #include "interrupt_flag.hpp"
 
-#include <csignal>
 #include <signal.h>
+
+#include <csignal>
 
 namespace fsi::app {
 namespace {

@@ -19,14 +19,14 @@ double fall_height(const Scenario& s, const FieldView& view) {
 
 }  // namespace
 
-render::ColorRange movie_color_range(const Scenario& s, render::Quantity q, const FieldView& first) {
+render::ColorRange movie_color_range(const Scenario& s, render::Quantity q,
+                                     const FieldView& first) {
   if (s.output.range_min < s.output.range_max) return {s.output.range_min, s.output.range_max};
   constexpr double kMargin = 1.1;
   const double h = fall_height(s, first);
   const double g = std::hypot(s.gravity_mps2.x, s.gravity_mps2.y);
   const double v0 = std::hypot(s.body.initial_velocity_mps.x, s.body.initial_velocity_mps.y);
-  const double mass_share =
-      s.solid.density_kgpm3 / (s.solid.density_kgpm3 + s.fluid.density_kgpm3);
+  const double mass_share = s.solid.density_kgpm3 / (s.solid.density_kgpm3 + s.fluid.density_kgpm3);
   const double v = std::max(kMargin * std::sqrt(v0 * v0 + 2 * g * h * mass_share), 1e-6);
   switch (q) {
     case render::Quantity::vx:

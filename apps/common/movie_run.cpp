@@ -3,12 +3,11 @@
 
 #include <chrono>
 #include <cstdio>
-#include <memory>
-#include <optional>
-
 #include <fsi/engine.hpp>
 #include <fsi/output.hpp>
 #include <fsi/png.hpp>
+#include <memory>
+#include <optional>
 #ifdef FSI_RENDER_HAS_VIDEO
 #include <fsi/video.hpp>
 #endif
@@ -27,7 +26,9 @@ namespace fs = std::filesystem;
 class MovieRun {
  public:
   MovieRun(const Scenario& scenario, const MovieOptions& options)
-      : options_(options), engine_(scenario), summary_(scenario),
+      : options_(options),
+        engine_(scenario),
+        summary_(scenario),
         csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true),
         pvd_(options.out_dir / "vtk" / "frames.pvd"),
         meter_(0.0, scenario.numerics.end_time_s, options.quiet) {
@@ -50,7 +51,8 @@ class MovieRun {
       summary_.add_output(options.out_dir / "movie.mp4");
     }
 #else
-    if (options.video) meter_.note("fsi-movie: built without video (FSI_WITH_VIDEO=OFF): no movie.mp4");
+    if (options.video)
+      meter_.note("fsi-movie: built without video (FSI_WITH_VIDEO=OFF): no movie.mp4");
 #endif
     history_.add(engine_.state().time_s, engine_.state().functionals);
   }
@@ -87,8 +89,7 @@ class MovieRun {
     if (engine_.state().step != last_frame_step_) write_frame();  // the last state, always
     meter_.finish();
     finish_outputs();
-    return {summary_.interrupted(), summary_.steps(), summary_.unconverged_steps(),
-            wall_seconds()};
+    return {summary_.interrupted(), summary_.steps(), summary_.unconverged_steps(), wall_seconds()};
   }
 
  private:

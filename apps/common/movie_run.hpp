@@ -11,10 +11,9 @@
 /// It stops early, cleanly (files closed, plots and summary written), on SIGINT/SIGTERM
 /// or when the engine rejects a step.
 #include <filesystem>
-#include <optional>
-
 #include <fsi/renderer.hpp>
 #include <fsi/scenario.hpp>
+#include <optional>
 
 namespace fsi::app {
 

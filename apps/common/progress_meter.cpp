@@ -1,8 +1,9 @@
 // The progress bar: ETA from the wall time per simulated second so far.
 #include "progress_meter.hpp"
 
-#include <algorithm>
 #include <unistd.h>
+
+#include <algorithm>
 
 namespace fsi::app {
 
@@ -14,8 +15,13 @@ double seconds_between(std::chrono::steady_clock::time_point a,
 }  // namespace
 
 ProgressMeter::ProgressMeter(double start_s, double end_s, bool quiet, std::FILE* out)
-    : start_s_(start_s), end_s_(end_s), quiet_(quiet), terminal_(isatty(fileno(out)) != 0),
-      out_(out), wall_start_(std::chrono::steady_clock::now()), last_print_(wall_start_) {}
+    : start_s_(start_s),
+      end_s_(end_s),
+      quiet_(quiet),
+      terminal_(isatty(fileno(out)) != 0),
+      out_(out),
+      wall_start_(std::chrono::steady_clock::now()),
+      last_print_(wall_start_) {}
 
 std::string ProgressMeter::duration_text(double seconds) {
   const long s = std::max(0L, static_cast<long>(seconds + 0.5));

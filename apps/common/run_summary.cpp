@@ -29,7 +29,9 @@ const char* kind_name(StepEvent::Kind k) {
 }  // namespace
 
 RunSummary::RunSummary(const Scenario& scenario)
-    : name_(scenario.name), source_(scenario.source.string()), fingerprint_(fingerprint(scenario)),
+    : name_(scenario.name),
+      source_(scenario.source.string()),
+      fingerprint_(fingerprint(scenario)),
       end_time_s_(scenario.numerics.end_time_s) {}
 
 void RunSummary::record_step(const StepReport& report, const State& state) {
@@ -53,11 +55,11 @@ void RunSummary::add_output(const std::filesystem::path& file) {
   if (std::find(outputs_.begin(), outputs_.end(), file) == outputs_.end()) outputs_.push_back(file);
 }
 
-nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool finished,
+nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool is_final,
                                            const std::filesystem::path& folder) const {
   nlohmann::ordered_json j;
   j["scenario"] = {{"name", name_}, {"source", source_}, {"fingerprint", fingerprint_}};
-  j["finished"] = finished;
+  j["final"] = is_final;  // false: written during the run (or the process died)
   j["interrupted"] = interrupted_;
   j["stop_reason"] = stop_reason_;
   j["steps"] = steps_;
@@ -94,11 +96,12 @@ nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool finished,
   return j;
 }
 
-void RunSummary::write(const std::filesystem::path& file, double wall_seconds, bool finished) const {
+void RunSummary::write(const std::filesystem::path& file, double wall_seconds,
+                       bool is_final) const {
   const std::filesystem::path tmp = file.string() + ".tmp";
   {
     std::ofstream out(tmp, std::ios::trunc);
-    out << to_json(wall_seconds, finished, file.parent_path()).dump(2) << '\n';
+    out << to_json(wall_seconds, is_final, file.parent_path()).dump(2) << '\n';
     if (!out) throw std::runtime_error(tmp.string() + ": cannot write the run summary");
   }
   std::filesystem::rename(tmp, file);

@@ -5,15 +5,15 @@
 ///   unconverged / rejected step counts, events (first occurrence of each kind with time,
 ///   place and count: real contact, active penalty contact, halved or rejected steps,
 ///   non-finite values), the minimal distance and when it occurred, the final
-///   functionals, the outputs written, and whether the run finished or was interrupted.
+///   functionals, the outputs written, whether the run was interrupted (Ctrl-C) and
+///   whether this is the final summary.
 #include <filesystem>
+#include <fsi/engine.hpp>
+#include <fsi/scenario.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <fsi/engine.hpp>
-#include <fsi/scenario.hpp>
 
 namespace fsi::app {
 
@@ -35,11 +35,12 @@ class RunSummary {
   long unconverged_steps() const { return unconverged_; }
   long rejected_steps() const { return rejected_; }
 
-  /// The summary; `finished` false while the run goes on.
-  nlohmann::ordered_json to_json(double wall_seconds, bool finished,
+  /// The summary. `is_final` (key "final"): false for the copies written after each
+  /// frame while the run goes on (a killed run leaves one), true for the last one.
+  nlohmann::ordered_json to_json(double wall_seconds, bool is_final,
                                  const std::filesystem::path& folder) const;
   /// Writes to_json to `file` (atomically: a temporary file renamed over it).
-  void write(const std::filesystem::path& file, double wall_seconds, bool finished) const;
+  void write(const std::filesystem::path& file, double wall_seconds, bool is_final) const;
 
  private:
   struct EventRecord {

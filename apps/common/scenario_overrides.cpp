@@ -14,11 +14,13 @@ nlohmann::json parse_value(const std::string& text) {
 Override parse_override(const std::string& path_equals_value) {
   const std::size_t eq = path_equals_value.find('=');
   if (eq == std::string::npos) {
-    throw InputError("--set", path_equals_value, "wants KEY=VALUE, e.g. /numerics/time_step_s=1e-3");
+    throw InputError("--set", path_equals_value,
+                     "wants KEY=VALUE, e.g. /numerics/time_step_s=1e-3");
   }
   Override o{path_equals_value.substr(0, eq), parse_value(path_equals_value.substr(eq + 1))};
   if (o.path.empty() || o.path[0] != '/') {
-    throw InputError("--set", o.path, "the key must be a path starting with '/', e.g. /solid/mu_pa");
+    throw InputError("--set", o.path,
+                     "the key must be a path starting with '/', e.g. /solid/mu_pa");
   }
   return o;
 }
@@ -33,9 +35,9 @@ Scenario apply_overrides(const Scenario& base, const std::vector<Override>& over
       // Only existing parents: a typo deeper down is an unknown key for parse_scenario,
       // never a silently created object tree.
       if (!doc.contains(pointer.parent_pointer())) {
-        throw InputError(origin, o.path, "no such key (parent " +
-                                             pointer.parent_pointer().to_string() +
-                                             " is not in the scenario)");
+        throw InputError(origin, o.path,
+                         "no such key (parent " + pointer.parent_pointer().to_string() +
+                             " is not in the scenario)");
       }
       doc[pointer] = o.value;
     } catch (const nlohmann::json::exception& e) {

@@ -8,11 +8,10 @@
 /// so keys the file leaves out can be set too, e.g. /mesh/blocks/0/y/0/patches=8.
 /// Values are JSON (1e-3, true, [0, 1], "halve_step"); a value that is not JSON is
 /// taken as a string, so /numerics/failure_policy=halve_step works without quotes.
+#include <fsi/scenario.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <fsi/scenario.hpp>
 
 namespace fsi::app {
 

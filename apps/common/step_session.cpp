@@ -2,11 +2,10 @@
 // exception into {"error": ...}, so no input ends the session but "quit" and EOF.
 #include "step_session.hpp"
 
-#include <sstream>
-#include <vector>
-
 #include <fsi/error.hpp>
 #include <fsi/png.hpp>
+#include <sstream>
+#include <vector>
 
 #include "frame_options.hpp"
 #include "functionals_json.hpp"

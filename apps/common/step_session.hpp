@@ -14,13 +14,12 @@
 ///   quit                      ends the session
 /// Answers: {"ok": true, "t": ..., "step": ..., ...} or {"error": "..."}; an error never
 /// ends the session. Blank lines and lines starting with '#' get no answer.
+#include <fsi/engine.hpp>
+#include <fsi/renderer.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-
-#include <fsi/engine.hpp>
-#include <fsi/renderer.hpp>
 
 namespace fsi::app {
 

@@ -1,22 +1,21 @@
 // fsi-movie end to end on a tiny scenario: every output of a finished run, and a run
 // stopped by SIGINT that still leaves a playable movie and an honest summary.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <csignal>
-#include <fcntl.h>
 #include <filesystem>
+#include <fsi/output.hpp>
+#include <fsi/png.hpp>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
 #include <vector>
-
-#include <fsi/output.hpp>
-#include <fsi/png.hpp>
 #ifdef FSI_RENDER_HAS_VIDEO
 #include <fsi/video.hpp>
 #endif
@@ -82,9 +81,9 @@ long video_frames(const fs::path& file) {
 
 TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   const fs::path out = fresh_dir("short");
-  const pid_t pid = start_movie({kScenario.string(), out.string(), "--frame-every", "5", "--size",
-                                 "320x240", "--quiet"},
-                                out.string() + ".log");
+  const pid_t pid = start_movie(
+      {kScenario.string(), out.string(), "--frame-every", "5", "--size", "320x240", "--quiet"},
+      out.string() + ".log");
   ASSERT_EQ(wait_exit_code(pid), 0) << read_text(out.string() + ".log");
 
   for (const char* frame : {"frame_000000.png", "frame_000005.png", "frame_000010.png"}) {
@@ -103,7 +102,8 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   EXPECT_EQ(csv[0], fsi::io::functionals_csv_header(true));
   EXPECT_EQ(csv[10].substr(0, 3), "10,");
 
-  for (const char* plot : {"plot_distance.png", "plot_height.png", "plot_velocity.png", "plot_mass.png"}) {
+  for (const char* plot :
+       {"plot_distance.png", "plot_height.png", "plot_velocity.png", "plot_mass.png"}) {
     EXPECT_FALSE(fsi::render::read_png(out / plot).empty()) << plot;
   }
 
@@ -117,7 +117,7 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   EXPECT_EQ(summary["scenario"]["name"], "tiny_drop");
   EXPECT_EQ(summary["scenario"]["fingerprint"].get<std::string>().size(), 16u);
   EXPECT_EQ(summary["steps"], 10);
-  EXPECT_EQ(summary["finished"], true);
+  EXPECT_EQ(summary["final"], true);
   EXPECT_EQ(summary["interrupted"], false);
   EXPECT_EQ(summary["unconverged_steps"], 0);
   EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.1, 1e-9);
@@ -132,8 +132,8 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
 TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   const fs::path out = fresh_dir("interrupted");
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = start_movie({kScenario.string(), out.string(), "--end-time", "5", "--frame-every",
-                                 "2", "--size", "320x240", "--no-vtu"},
+  const pid_t pid = start_movie({kScenario.string(), out.string(), "--end-time", "5",
+                                 "--frame-every", "2", "--size", "320x240", "--no-vtu"},
                                 out.string() + ".log");
   // The first frame's summary says the run is under way; then let it go on a little.
   while (!fs::exists(out / "summary.json") &&
@@ -146,7 +146,7 @@ TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
 
   const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
   EXPECT_EQ(summary["interrupted"], true);
-  EXPECT_EQ(summary["finished"], true);
+  EXPECT_EQ(summary["final"], true);
   const long steps = summary["steps"].get<long>();
   EXPECT_GT(steps, 0);
   EXPECT_LT(steps, 500) << "stopped before the end time";
