@@ -70,15 +70,6 @@ int wait_exit_code(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-long video_frames(const fs::path& file) {
-#ifdef FSI_RENDER_HAS_VIDEO
-  return fsi::render::probe_video(file).frames;
-#else
-  (void)file;
-  return -1;
-#endif
-}
-
 TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   const fs::path out = fresh_dir("short");
   const pid_t pid = start_movie(
@@ -154,7 +145,7 @@ TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   EXPECT_TRUE(fs::exists(out / "plot_distance.png"));
 #ifdef FSI_RENDER_HAS_VIDEO
   // A frame every 2 steps, the initial one, and the last state's if it fell between.
-  const long frames = video_frames(out / "movie.mp4");
+  const long frames = fsi::render::probe_video(out / "movie.mp4").frames;
   EXPECT_GE(frames, 1 + steps / 2);
   EXPECT_LE(frames, 2 + steps / 2);
 #endif
