@@ -7,6 +7,7 @@ extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/error.h>
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
@@ -103,6 +104,9 @@ VideoWriter::VideoWriter(const std::filesystem::path& file, int width, int heigh
                                 std::to_string(height) + " or fps " + std::to_string(options.fps));
   }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  // FFmpeg's default log level (info) prints encoder banners and muxer notes into the
+  // apps' progress output: keep warnings and errors, unless the program chose a level.
+  if (av_log_get_level() == AV_LOG_INFO) av_log_set_level(AV_LOG_WARNING);
   check(avformat_alloc_output_context2(&m.format, nullptr, "mp4", file.c_str()), file,
         "creating the MP4 muxer");
   const AVCodec* codec = find_encoder(options.encoder);

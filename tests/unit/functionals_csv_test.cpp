@@ -1,4 +1,4 @@
-#include "io/functionals_csv.hpp"
+#include "fsi/output.hpp"
 
 #include <gtest/gtest.h>
 

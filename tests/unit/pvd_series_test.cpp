@@ -1,4 +1,4 @@
-#include "io/pvd_series.hpp"
+#include "fsi/output.hpp"
 
 #include <gtest/gtest.h>
 

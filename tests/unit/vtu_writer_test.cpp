@@ -1,4 +1,4 @@
-#include "io/vtu_writer.hpp"
+#include "fsi/output.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Functionals as CSV. The column order is the header's; keep both in one place (here).
-#include "io/functionals_csv.hpp"
+#include "fsi/output.hpp"
 
 #include <stdexcept>
 

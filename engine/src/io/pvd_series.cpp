@@ -1,5 +1,5 @@
 // The .pvd collection: small, so rewriting it whole after each frame is cheap.
-#include "io/pvd_series.hpp"
+#include "fsi/output.hpp"
 
 #include <utility>
 

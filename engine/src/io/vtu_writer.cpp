@@ -1,6 +1,6 @@
 // VTK XML writers. ASCII keeps them dependency-free and easy to check in tests;
 // a 66049-node frame is about 10 MB, which is fine for the studies' frame rates.
-#include "io/vtu_writer.hpp"
+#include "fsi/output.hpp"
 
 #include <cstdio>
 #include <stdexcept>

@@ -1,0 +1,165 @@
+// The fsi-movie run loop: step, record, and every n-th step a frame in every format.
+#include "movie_run.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fsi/engine.hpp>
+#include <fsi/output.hpp>
+#include <fsi/png.hpp>
+#include <memory>
+#include <optional>
+#ifdef FSI_RENDER_HAS_VIDEO
+#include <fsi/video.hpp>
+#endif
+
+#include "functional_plots.hpp"
+#include "interrupt_flag.hpp"
+#include "movie_color_range.hpp"
+#include "progress_meter.hpp"
+#include "run_summary.hpp"
+
+namespace fsi::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MovieRun {
+ public:
+  MovieRun(const Scenario& scenario, const MovieOptions& options)
+      : options_(options),
+        engine_(scenario),
+        summary_(scenario),
+        csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true),
+        pvd_(options.out_dir / "vtk" / "frames.pvd"),
+        meter_(0.0, scenario.numerics.end_time_s, options.quiet) {
+    const OutputSpec& out = scenario.output;
+    spec_.width = out.width_px;
+    spec_.height = out.height_px;
+    spec_.quantity = render::parse_quantity(out.field);
+    spec_.show_mesh = out.mesh_overlay;
+    spec_.window = options.zoom;
+    spec_.title = scenario.name;
+    spec_.range = movie_color_range(scenario, spec_.quantity, engine_.view());
+    summary_.add_output(options.out_dir / "functionals.csv");
+    if (options.png) fs::create_directories(options.out_dir / "frames");
+    if (options.vtu) fs::create_directories(options.out_dir / "vtk");
+#ifdef FSI_RENDER_HAS_VIDEO
+    if (options.video) {
+      render::VideoOptions vo;
+      vo.fps = out.fps;
+      video_.emplace(options.out_dir / "movie.mp4", spec_.width, spec_.height, vo);
+      summary_.add_output(options.out_dir / "movie.mp4");
+    }
+#else
+    if (options.video)
+      meter_.note("fsi-movie: built without video (FSI_WITH_VIDEO=OFF): no movie.mp4");
+#endif
+    history_.add(engine_.state().time_s, engine_.state().functionals);
+  }
+
+  MovieResult run() {
+    const Scenario& s = engine_.scenario();
+    const int frame_every = s.output.frame_every;
+    write_frame();
+    for (;;) {
+      if (interrupt_requested()) {
+        summary_.set_interrupted(true);
+        summary_.set_stop_reason("interrupted by a signal");
+        break;
+      }
+      // Half a step of slack: t accumulates rounding, t = end - 1e-16 is the end.
+      if (engine_.state().time_s >= s.numerics.end_time_s - 0.5 * s.numerics.time_step_s) break;
+      const StepReport r = engine_.step();
+      const State& st = engine_.state();
+      summary_.record_step(r, st);
+      if (!r.converged) {
+        char where[96];
+        std::snprintf(where, sizeof where, "warning: step %ld (t = %.6g s): ", st.step, st.time_s);
+        meter_.note(where + r.message);
+      }
+      if (!r.accepted) {
+        summary_.set_stop_reason("the engine rejected a step: " + r.message);
+        break;
+      }
+      csv_.append(st, r);
+      history_.add(st.time_s, st.functionals);
+      if (st.step % frame_every == 0) write_frame();
+      meter_.update(st.time_s, st.step, summary_.unconverged_steps());
+    }
+    if (engine_.state().step != last_frame_step_) write_frame();  // the last state, always
+    meter_.finish();
+    finish_outputs();
+    return {summary_.interrupted(), summary_.steps(), summary_.unconverged_steps(), wall_seconds()};
+  }
+
+ private:
+  double wall_seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+  void write_frame() {
+    const FieldView view = engine_.view();
+    last_frame_step_ = view.step;
+    char name[48];
+    std::snprintf(name, sizeof name, "frame_%06ld.png", view.step);
+    if (options_.png || video_active()) {
+      const render::Image image = renderer_.render(view, spec_);
+      if (options_.png) render::write_png(options_.out_dir / "frames" / name, image);
+#ifdef FSI_RENDER_HAS_VIDEO
+      if (video_) video_->write(image);
+#endif
+    }
+    if (options_.vtu) io::write_vtk_frame(options_.out_dir / "vtk", "frame", view, pvd_);
+    if (options_.png) summary_.add_output(options_.out_dir / "frames");
+    if (options_.vtu) summary_.add_output(pvd_.file());
+    summary_.write(options_.out_dir / "summary.json", wall_seconds(), false);
+  }
+
+  bool video_active() const {
+#ifdef FSI_RENDER_HAS_VIDEO
+    return video_.has_value();
+#else
+    return false;
+#endif
+  }
+
+  // Closes the video, draws the plots, writes the final summary.
+  void finish_outputs() {
+#ifdef FSI_RENDER_HAS_VIDEO
+    if (video_) video_->close();
+#endif
+    try {
+      for (const fs::path& f :
+           write_functional_plots(renderer_, history_, engine_.scenario().name, options_.out_dir))
+        summary_.add_output(f);
+    } catch (const std::exception& e) {
+      meter_.note(std::string("warning: plots not written: ") + e.what());
+    }
+    summary_.write(options_.out_dir / "summary.json", wall_seconds(), true);
+  }
+
+  MovieOptions options_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  Engine engine_;
+  RunSummary summary_;
+  io::FunctionalsCsv csv_;
+  io::PvdSeries pvd_;
+  ProgressMeter meter_;
+  FunctionalsHistory history_;
+  render::Renderer renderer_;
+  render::FrameSpec spec_;
+#ifdef FSI_RENDER_HAS_VIDEO
+  std::optional<render::VideoWriter> video_;
+#endif
+  long last_frame_step_ = -1;
+};
+
+}  // namespace
+
+MovieResult run_movie(const Scenario& scenario, const MovieOptions& options) {
+  fs::create_directories(options.out_dir);
+  MovieRun run(scenario, options);
+  return run.run();
+}
+
+}  // namespace fsi::app

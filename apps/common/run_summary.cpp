@@ -1,0 +1,110 @@
+// summary.json: counts and first occurrences, so a long run is judged without its logs.
+#include "run_summary.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
+#include "functionals_json.hpp"
+
+namespace fsi::app {
+namespace {
+
+const char* kind_name(StepEvent::Kind k) {
+  switch (k) {
+    case StepEvent::Kind::real_contact:
+      return "real_contact";
+    case StepEvent::Kind::contact_force_active:
+      return "contact_force_active";
+    case StepEvent::Kind::step_halved:
+      return "step_halved";
+    case StepEvent::Kind::rolled_back:
+      return "rolled_back";
+    case StepEvent::Kind::non_finite:
+      return "non_finite";
+  }
+  return "unknown";
+}
+
+}  // namespace
+
+RunSummary::RunSummary(const Scenario& scenario)
+    : name_(scenario.name),
+      source_(scenario.source.string()),
+      fingerprint_(fingerprint(scenario)),
+      end_time_s_(scenario.numerics.end_time_s) {}
+
+void RunSummary::record_step(const StepReport& report, const State& state) {
+  ++steps_;
+  if (!report.converged) ++unconverged_;
+  if (!report.accepted) ++rejected_;
+  time_s_ = state.time_s;
+  last_ = state.functionals;
+  const double d = state.functionals.min_distance_m;
+  if (report.accepted && (!have_min_ || d < min_distance_m_)) {
+    have_min_ = true;
+    min_distance_m_ = d;
+    min_distance_time_s_ = state.time_s;
+  }
+  for (const StepEvent& e : report.events) {
+    ++events_.try_emplace(e.kind, EventRecord{e, 0}).first->second.count;
+  }
+}
+
+void RunSummary::add_output(const std::filesystem::path& file) {
+  if (std::find(outputs_.begin(), outputs_.end(), file) == outputs_.end()) outputs_.push_back(file);
+}
+
+nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool is_final,
+                                           const std::filesystem::path& folder) const {
+  nlohmann::ordered_json j;
+  j["scenario"] = {{"name", name_}, {"source", source_}, {"fingerprint", fingerprint_}};
+  j["final"] = is_final;  // false: written during the run (or the process died)
+  j["interrupted"] = interrupted_;
+  j["stop_reason"] = stop_reason_;
+  j["steps"] = steps_;
+  j["simulated_time_s"] = time_s_;
+  j["end_time_s"] = end_time_s_;
+  j["wall_time_s"] = wall_seconds;
+  j["converged_steps"] = steps_ - unconverged_;
+  j["unconverged_steps"] = unconverged_;
+  j["rejected_steps"] = rejected_;
+  if (have_min_) {
+    j["min_distance"] = {{"distance_m", number_json(min_distance_m_)},
+                         {"time_s", min_distance_time_s_}};
+  } else {
+    j["min_distance"] = nullptr;
+  }
+  nlohmann::ordered_json events = nlohmann::ordered_json::array();
+  for (const auto& [kind, rec] : events_) {
+    nlohmann::ordered_json e;
+    e["kind"] = kind_name(kind);
+    e["first_time_s"] = rec.first.time_s;
+    if (kind == StepEvent::Kind::real_contact) {
+      e["where_m"] = {rec.first.where_m.x, rec.first.where_m.y};
+      e["wall"] = rec.first.wall;
+    }
+    e["steps"] = rec.count;
+    e["text"] = rec.first.text;
+    events.push_back(std::move(e));
+  }
+  j["events"] = std::move(events);
+  j["final_functionals"] = functionals_json(last_);
+  nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
+  for (const auto& f : outputs_) outputs.push_back(f.lexically_relative(folder).generic_string());
+  j["outputs"] = std::move(outputs);
+  return j;
+}
+
+void RunSummary::write(const std::filesystem::path& file, double wall_seconds,
+                       bool is_final) const {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << to_json(wall_seconds, is_final, file.parent_path()).dump(2) << '\n';
+    if (!out) throw std::runtime_error(tmp.string() + ": cannot write the run summary");
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+}  // namespace fsi::app

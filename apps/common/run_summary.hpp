@@ -1,0 +1,63 @@
+#pragma once
+/// \file run_summary.hpp
+/// What a run did, collected step by step and written as summary.json:
+///   scenario (name, source, fingerprint), steps, simulated and wall time, converged /
+///   unconverged / rejected step counts, events (first occurrence of each kind with time,
+///   place and count: real contact, active penalty contact, halved or rejected steps,
+///   non-finite values), the minimal distance and when it occurred, the final
+///   functionals, the outputs written, whether the run was interrupted (Ctrl-C) and
+///   whether this is the final summary.
+#include <filesystem>
+#include <fsi/engine.hpp>
+#include <fsi/scenario.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace fsi::app {
+
+class RunSummary {
+ public:
+  explicit RunSummary(const Scenario& scenario);
+
+  /// Records one step's report and the state it left.
+  void record_step(const StepReport& report, const State& state);
+  /// Records an output file or folder (listed relative to the summary's folder).
+  void add_output(const std::filesystem::path& file);
+
+  void set_interrupted(bool interrupted) { interrupted_ = interrupted; }
+  /// Why the run ended before its end time (empty: it did not).
+  void set_stop_reason(std::string why) { stop_reason_ = std::move(why); }
+
+  bool interrupted() const { return interrupted_; }
+  long steps() const { return steps_; }
+  long unconverged_steps() const { return unconverged_; }
+  long rejected_steps() const { return rejected_; }
+
+  /// The summary. `is_final` (key "final"): false for the copies written after each
+  /// frame while the run goes on (a killed run leaves one), true for the last one.
+  nlohmann::ordered_json to_json(double wall_seconds, bool is_final,
+                                 const std::filesystem::path& folder) const;
+  /// Writes to_json to `file` (atomically: a temporary file renamed over it).
+  void write(const std::filesystem::path& file, double wall_seconds, bool is_final) const;
+
+ private:
+  struct EventRecord {
+    StepEvent first;
+    long count = 0;
+  };
+  std::string name_, source_, fingerprint_;
+  double end_time_s_;
+  long steps_ = 0, unconverged_ = 0, rejected_ = 0;
+  double time_s_ = 0.0;
+  Functionals last_{};
+  bool have_min_ = false;
+  double min_distance_m_ = 0.0, min_distance_time_s_ = 0.0;
+  std::map<StepEvent::Kind, EventRecord> events_;
+  std::vector<std::filesystem::path> outputs_;
+  bool interrupted_ = false;
+  std::string stop_reason_;
+};
+
+}  // namespace fsi::app

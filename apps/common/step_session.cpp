@@ -1,0 +1,192 @@
+// fsi-step's commands. Each handler returns the whole answer; handle() turns every
+// exception into {"error": ...}, so no input ends the session but "quit" and EOF.
+#include "step_session.hpp"
+
+#include <fsi/error.hpp>
+#include <fsi/png.hpp>
+#include <sstream>
+#include <vector>
+
+#include "frame_options.hpp"
+#include "functionals_json.hpp"
+#include "scenario_overrides.hpp"
+
+namespace fsi::app {
+namespace {
+
+constexpr const char* kOrigin = "<command>";
+
+constexpr const char* kCommands[] = {
+    "step [N]",
+    "render FILE.png [field=vx|vy|vmag|p|umag] [zoom=x0,y0,x1,y1] [size=WxH] [mesh=0|1]",
+    "functionals",
+    "set KEY VALUE   (KEY: a /numerics key, e.g. time_step_s, newton_budget, failure_policy)",
+    "numerics",
+    "save FILE",
+    "load FILE",
+    "help",
+    "quit"};
+
+std::vector<std::string> split_words(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+void want_args(const std::vector<std::string>& words, std::size_t lo, std::size_t hi,
+               const char* form) {
+  if (words.size() - 1 < lo || words.size() - 1 > hi) {
+    throw InputError(kOrigin, words[0], std::string("usage: ") + form);
+  }
+}
+
+}  // namespace
+
+StepSession::StepSession(const Scenario& scenario)
+    : engine_(scenario), numerics_(scenario.numerics) {}
+
+const char* StepSession::hint() {
+  return "fsi-step: one command per line, one JSON answer each; 'help' lists them, "
+         "'quit' or Ctrl-D ends.";
+}
+
+nlohmann::ordered_json StepSession::ok() const {
+  nlohmann::ordered_json j;
+  j["ok"] = true;
+  j["t"] = engine_.state().time_s;
+  j["step"] = engine_.state().step;
+  return j;
+}
+
+std::optional<nlohmann::ordered_json> StepSession::handle(const std::string& line) {
+  const std::vector<std::string> w = split_words(line);
+  if (w.empty() || w[0][0] == '#') return std::nullopt;
+  try {
+    const std::string& c = w[0];
+    if (c == "step") {
+      want_args(w, 0, 1, "step [N]");
+      return step(w.size() > 1 ? parse_int(w[1], 1, 1000000, kOrigin, "step N") : 1);
+    }
+    if (c == "render") return render(w);
+    if (c == "functionals") {
+      want_args(w, 0, 0, "functionals");
+      auto j = ok();
+      j["functionals"] = functionals_json(engine_.state().functionals);
+      return j;
+    }
+    if (c == "set") {
+      want_args(w, 2, 2, "set KEY VALUE");
+      return set(w[1], w[2]);
+    }
+    if (c == "numerics") {
+      want_args(w, 0, 0, "numerics");
+      auto j = ok();
+      Scenario s = engine_.scenario();
+      s.numerics = numerics_;
+      j["numerics"] = nlohmann::ordered_json::parse(to_json(s))["numerics"];
+      return j;
+    }
+    if (c == "save" || c == "load") {
+      want_args(w, 1, 1, c == "save" ? "save FILE" : "load FILE");
+      if (c == "save") {
+        save_checkpoint(engine_, w[1]);
+      } else {
+        load_checkpoint(engine_, w[1]);
+      }
+      auto j = ok();
+      j["file"] = w[1];
+      return j;
+    }
+    if (c == "help") {
+      auto j = ok();
+      j["commands"] = kCommands;
+      return j;
+    }
+    if (c == "quit" || c == "exit") {
+      quit_ = true;
+      auto j = ok();
+      j["bye"] = true;
+      return j;
+    }
+    throw InputError(kOrigin, c, "unknown command; 'help' lists the commands");
+  } catch (const std::exception& e) {
+    return nlohmann::ordered_json{{"error", e.what()}};
+  }
+}
+
+nlohmann::ordered_json StepSession::step(long n) {
+  bool rejected = false;
+  for (long i = 0; i < n && !rejected; ++i) {
+    const StepReport r = engine_.step();
+    (r.converged ? converged_ : unconverged_) += 1;
+    last_message_ = r.message;
+    rejected = !r.accepted;
+  }
+  auto j = ok();
+  j["converged_steps"] = converged_;
+  j["unconverged_steps"] = unconverged_;
+  j["last_message"] = last_message_;
+  if (rejected) j["rejected"] = true;  // the state did not advance; change numerics first
+  return j;
+}
+
+nlohmann::ordered_json StepSession::render(const std::vector<std::string>& words) {
+  if (words.size() < 2 || words[1].find('=') != std::string::npos) {
+    throw InputError(kOrigin, "render", std::string("usage: ") + kCommands[1]);
+  }
+  const Scenario& s = engine_.scenario();
+  render::FrameSpec spec;
+  spec.width = s.output.width_px;
+  spec.height = s.output.height_px;
+  spec.quantity = render::parse_quantity(s.output.field);
+  spec.show_mesh = s.output.mesh_overlay;
+  for (std::size_t i = 2; i < words.size(); ++i) {
+    const std::size_t eq = words[i].find('=');
+    const std::string key = words[i].substr(0, eq);
+    const std::string value = eq == std::string::npos ? "" : words[i].substr(eq + 1);
+    if (key == "field") {
+      spec.quantity = parse_field(value, kOrigin, "render field");
+    } else if (key == "zoom") {
+      spec.window = parse_zoom(value, kOrigin, "render zoom");
+    } else if (key == "size") {
+      parse_size(value, kOrigin, "render size", spec.width, spec.height);
+    } else if (key == "mesh") {
+      spec.show_mesh = parse_int(value, 0, 1, kOrigin, "render mesh") == 1;
+    } else {
+      throw InputError(kOrigin, words[i], "unknown render option; field=, zoom=, size=, mesh=");
+    }
+  }
+  const FieldView view = engine_.view();
+  if (s.output.range_min < s.output.range_max) {
+    spec.range = render::ColorRange{s.output.range_min, s.output.range_max};
+  } else {
+    spec.range = render::auto_range(view, spec.quantity);
+  }
+  if (!renderer_) renderer_ = std::make_unique<render::Renderer>();
+  render::write_png(words[1], renderer_->render(view, spec));
+  auto j = ok();
+  j["file"] = words[1];
+  j["field"] = std::string(render::quantity_info(spec.quantity).name);
+  j["width"] = spec.width;
+  j["height"] = spec.height;
+  j["range"] = {spec.range->lo, spec.range->hi};
+  return j;
+}
+
+nlohmann::ordered_json StepSession::set(const std::string& key, const std::string& value) {
+  if (key.empty() || key.find('/') != std::string::npos) {
+    throw InputError(kOrigin, key, "set wants a key of /numerics, e.g. time_step_s");
+  }
+  Scenario current = engine_.scenario();
+  current.numerics = numerics_;
+  const Scenario changed =
+      apply_overrides(current, {{"/numerics/" + key, parse_value(value)}}, kOrigin);
+  numerics_ = changed.numerics;
+  engine_.set_numerics(numerics_);
+  auto j = ok();
+  j["numerics"] = nlohmann::ordered_json::parse(to_json(changed))["numerics"];
+  return j;
+}
+
+}  // namespace fsi::app

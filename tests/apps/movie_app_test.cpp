@@ -1,0 +1,154 @@
+// fsi-movie end to end on a tiny scenario: every output of a finished run, and a run
+// stopped by SIGINT that still leaves a playable movie and an honest summary.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fsi/output.hpp>
+#include <fsi/png.hpp>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+#ifdef FSI_RENDER_HAS_VIDEO
+#include <fsi/video.hpp>
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScenario = fs::path(FSI_SOURCE_DIR) / "tests/data/tiny_drop.json";
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(FSI_BINARY_DIR) / "test_tmp" / "movie_app" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
+  return dir;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> read_lines(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+/// Starts fsi-movie with `args`, stdout and stderr into `log`. Returns the child's pid.
+pid_t start_movie(const std::vector<std::string>& args, const fs::path& log) {
+  std::vector<std::string> argv_text{FSI_MOVIE_EXE};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    std::vector<char*> argv;
+    for (std::string& a : argv_text) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Waits for the child; its exit code, or 128 + signal.
+int wait_exit_code(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+TEST(MovieApp, WritesEveryOutputOfAShortRun) {
+  const fs::path out = fresh_dir("short");
+  const pid_t pid = start_movie(
+      {kScenario.string(), out.string(), "--frame-every", "5", "--size", "320x240", "--quiet"},
+      out.string() + ".log");
+  ASSERT_EQ(wait_exit_code(pid), 0) << read_text(out.string() + ".log");
+
+  for (const char* frame : {"frame_000000.png", "frame_000005.png", "frame_000010.png"}) {
+    const fsi::render::Image im = fsi::render::read_png(out / "frames" / frame);
+    EXPECT_EQ(im.width, 320);
+    EXPECT_EQ(im.height, 240);
+  }
+#ifdef FSI_RENDER_HAS_VIDEO
+  const fsi::render::VideoInfo info = fsi::render::probe_video(out / "movie.mp4");
+  EXPECT_EQ(info.frames, 3);
+  EXPECT_EQ(info.width, 320);
+#endif
+
+  const std::vector<std::string> csv = read_lines(out / "functionals.csv");
+  ASSERT_EQ(csv.size(), 11u) << "header + one row per step";
+  EXPECT_EQ(csv[0], fsi::io::functionals_csv_header(true));
+  EXPECT_EQ(csv[10].substr(0, 3), "10,");
+
+  for (const char* plot :
+       {"plot_distance.png", "plot_height.png", "plot_velocity.png", "plot_mass.png"}) {
+    EXPECT_FALSE(fsi::render::read_png(out / plot).empty()) << plot;
+  }
+
+  const std::string pvd = read_text(out / "vtk/frames.pvd");
+  for (const char* vtu : {"frame_000000.vtu", "frame_000005.vtu", "frame_000010.vtu"}) {
+    EXPECT_NE(pvd.find(vtu), std::string::npos) << vtu;
+    EXPECT_TRUE(fs::exists(out / "vtk" / vtu)) << vtu;
+  }
+
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["scenario"]["name"], "tiny_drop");
+  EXPECT_EQ(summary["scenario"]["fingerprint"].get<std::string>().size(), 16u);
+  EXPECT_EQ(summary["steps"], 10);
+  EXPECT_EQ(summary["final"], true);
+  EXPECT_EQ(summary["interrupted"], false);
+  EXPECT_EQ(summary["unconverged_steps"], 0);
+  EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.1, 1e-9);
+  EXPECT_GT(summary["min_distance"]["distance_m"].get<double>(), 0.5);
+  EXPECT_TRUE(summary["events"].is_array());
+  const std::string outputs = summary["outputs"].dump();
+  for (const char* f : {"functionals.csv", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
+    EXPECT_NE(outputs.find(f), std::string::npos) << f;
+  }
+}
+
+TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
+  const fs::path out = fresh_dir("interrupted");
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = start_movie({kScenario.string(), out.string(), "--end-time", "5",
+                                 "--frame-every", "2", "--size", "320x240", "--no-vtu"},
+                                out.string() + ".log");
+  // The first frame's summary says the run is under way; then let it go on a little.
+  while (!fs::exists(out / "summary.json") &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(20)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::this_thread::sleep_until(start + std::chrono::seconds(2));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  ASSERT_EQ(wait_exit_code(pid), 130) << read_text(out.string() + ".log");
+
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["interrupted"], true);
+  EXPECT_EQ(summary["final"], true);
+  const long steps = summary["steps"].get<long>();
+  EXPECT_GT(steps, 0);
+  EXPECT_LT(steps, 500) << "stopped before the end time";
+  EXPECT_EQ(read_lines(out / "functionals.csv").size(), std::size_t(steps) + 1);
+  EXPECT_TRUE(fs::exists(out / "plot_distance.png"));
+#ifdef FSI_RENDER_HAS_VIDEO
+  // A frame every 2 steps, the initial one, and the last state's if it fell between.
+  const long frames = fsi::render::probe_video(out / "movie.mp4").frames;
+  EXPECT_GE(frames, 1 + steps / 2);
+  EXPECT_LE(frames, 2 + steps / 2);
+#endif
+}
+
+}  // namespace
