@@ -2,8 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace fsi::solve {
 namespace {
@@ -62,11 +60,6 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     result.assembly_seconds += seconds_since(t0);
   }
   double current = norm(r);
-  if (std::getenv("FSI_DEBUG") && current > 1.0) {
-    Eigen::Index i;
-    r.cwiseProduct(row_scale_).cwiseAbs().maxCoeff(&i);
-    std::fprintf(stderr, "DEBUG max scaled residual %g at dof %ld (node %ld field %ld) r=%g scale=%g\n", current, (long)i, (long)i / 5, (long)i % 5, r[i], row_scale_[i]);
-  }
   result.norms.push_back(current);
   if (!std::isfinite(current)) {
     result.non_finite = true;
@@ -96,26 +89,6 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
       result.assembly_seconds += seconds_since(t0);
       trial = norm(r_try);
       if (trial < current) break;
-    }
-    if (!(trial < current) && fresh && std::getenv("FSI_DEBUG")) {
-      Eigen::VectorXd rp, rm;
-      const double h = 1e-7;
-      system.residual(x + h * dx, rp);
-      system.residual(x - h * dx, rm);
-      const Eigen::VectorXd fd = (rp - rm) / (2 * h);
-      const Eigen::VectorXd jdx = jacobian_ * dx;
-      Eigen::Index i;
-      (fd - jdx).cwiseProduct(row_scale_).cwiseAbs().maxCoeff(&i);
-      std::fprintf(stderr, "DEBUG fresh direction failed: |J dx + r| = %g (|r| %g), |fd - J dx|max scaled = %g at dof %ld (node %ld field %ld): fd %g Jdx %g, rcond %g\n",
-                   (jdx + r).norm(), r.norm(), std::abs((fd - jdx)[i] * row_scale_[i]), (long)i, (long)i / 5, (long)i % 5, fd[i], jdx[i], lu_->rcond());
-      for (int f = 0; f < 5; ++f) {
-        double best = 0; long at = -1;
-        for (long j = f; j < dx.size(); j += 5) if (std::abs(dx[j]) > best) { best = std::abs(dx[j]); at = j / 5; }
-        std::fprintf(stderr, "  field %d: max |dx| %g at node %ld (x = %g)\n", f, best, at, x[5 * at + f]);
-      }
-      Eigen::Index k;
-      r.cwiseAbs().maxCoeff(&k);
-      std::fprintf(stderr, "  max |r| %g at node %ld field %ld\n", std::abs(r[k]), (long)k / 5, (long)k % 5);
     }
     if (!(trial < current)) {
       // No decrease along this direction: with a stale factorization, refactorize and
