@@ -182,7 +182,7 @@ struct Engine::Impl {
     return r;
   }
 
-  void accept(Eigen::VectorXd&& x, double k, const fe::QuadratureTable& quad_next, StepReport& report) {
+  void accept(Eigen::VectorXd&& x, double k, fe::QuadratureTable&& quad_next, StepReport& report) {
     state.previous_solution = std::move(state.solution);
     state.solution = std::move(x);
     state.previous_corner_sign = std::move(state.corner_sign);
@@ -194,7 +194,7 @@ struct Engine::Impl {
     state.time_step_s = k;
     cut_prev = std::move(cut_cur);
     cut_cur = std::move(cut_next);
-    quad_cur = quad_next;
+    quad_cur = std::move(quad_next);  // the step's quadrature becomes the current one: no copy
     const auto t0 = std::chrono::steady_clock::now();
     data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution));
     cut_next = fe::build_cut_mesh(mesh, data_next);
@@ -220,7 +220,7 @@ struct Engine::Impl {
   StepReport step() {
     StepReport report;
     double k = numerics.time_step_s;
-    const fe::QuadratureTable quad = fe::build_quadrature(cut_next);
+    fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
     // start) is kept: when every halving fails too, that one is accepted and flagged,
     // never simply the last (after real contact smaller steps can do worse).
@@ -232,7 +232,7 @@ struct Engine::Impl {
       const bool finite = !r.non_finite && x.allFinite();
       report.converged = r.converged && finite;
       if (report.converged || (finite && numerics.failure_policy == FailurePolicy::accept_and_flag)) {
-        accept(std::move(x), k, quad, report);
+        accept(std::move(x), k, std::move(quad), report);
         report.accepted = true;
         break;
       }
@@ -252,7 +252,7 @@ struct Engine::Impl {
       }
       if (best_x.size() > 0) {
         k = best_k;
-        accept(std::move(best_x), k, quad, report);
+        accept(std::move(best_x), k, std::move(quad), report);
         report.accepted = true;
         break;
       }
