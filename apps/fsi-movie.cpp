@@ -5,10 +5,14 @@
 //   fsi-movie SCENARIO.json OUTDIR [--set KEY=VALUE ...] [--frame-every N]
 //             [--field vx|vy|vmag|p|umag] [--no-video] [--no-png] [--no-vtu] [--size WxH]
 //             [--fps N] [--zoom x0,y0,x1,y1] [--mesh] [--end-time T] [--quiet]
+//             [--checkpoint-every N] [--resume CHECKPOINT]
 //
 // --set changes one scenario key (a path into the scenario's JSON, the value as JSON)
 // before the scenario is validated; --frame-every, --field, --size, --fps, --mesh and
 // --end-time are shorthands for --set on /output/... and /numerics/end_time_s.
+// --checkpoint-every N writes OUTDIR/checkpoints/step_<step>.ckpt every N steps;
+// --resume starts from such a checkpoint (same scenario, same --set changes) instead of
+// t = 0, e.g. to re-run the seconds around a contact with other outputs.
 // Progress goes to stderr (a bar on a terminal). Ctrl-C stops after the current step,
 // closes the movie and writes the plots and summary.json with "interrupted": true.
 // Exit code: 0 done, 1 failed while running, 2 bad input (message + usage), 130
@@ -19,6 +23,7 @@
 //   fsi-movie assets/scenarios/ball_drop.json out/drop --field p --end-time 1 --no-vtu
 //   fsi-movie assets/scenarios/ball_drop.json out/k1e-3 --set /numerics/time_step_s=1e-3
 //   fsi-movie assets/scenarios/contact/d0_1e-3_g800.json out/gap --zoom -0.3,-1,0.3,-0.9 --mesh
+//   fsi-movie assets/scenarios/ball_drop.json out/late --resume out/drop/checkpoints/step_002300.ckpt
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -39,7 +44,7 @@ constexpr const char* kUsage =
     "usage: fsi-movie SCENARIO.json OUTDIR [--set KEY=VALUE ...] [--frame-every N]\n"
     "                 [--field vx|vy|vmag|p|umag] [--no-video] [--no-png] [--no-vtu]\n"
     "                 [--size WxH] [--fps N] [--zoom x0,y0,x1,y1] [--mesh] [--end-time T]\n"
-    "                 [--quiet]\n"
+    "                 [--quiet] [--checkpoint-every N] [--resume CHECKPOINT]\n"
     "  e.g. fsi-movie assets/scenarios/ball_drop_demo.json out/demo --set /solid/mu_pa=4e5\n";
 
 int usage(const std::string& why) {
@@ -94,6 +99,10 @@ Arguments parse_arguments(int argc, char** argv) {
       a.movie.png = false;
     } else if (opt == "--no-vtu") {
       a.movie.vtu = false;
+    } else if (opt == "--checkpoint-every") {
+      a.movie.checkpoint_every = fsi::app::parse_int(value(), 1, 100000000, "command line", opt);
+    } else if (opt == "--resume") {
+      a.movie.resume_from = value();
     } else if (opt == "--quiet") {
       a.movie.quiet = true;
     } else if (opt.size() > 1 && opt[0] == '-') {

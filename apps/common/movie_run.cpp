@@ -32,6 +32,11 @@ class MovieRun {
         csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true),
         pvd_(options.out_dir / "vtk" / "frames.pvd"),
         meter_(0.0, scenario.numerics.end_time_s, options.quiet) {
+    if (!options.resume_from.empty()) {
+      load_checkpoint(engine_, options.resume_from);
+      meter_ = ProgressMeter(engine_.state().time_s, scenario.numerics.end_time_s, options.quiet);
+    }
+    if (options.checkpoint_every > 0) fs::create_directories(options.out_dir / "checkpoints");
     const OutputSpec& out = scenario.output;
     spec_.width = out.width_px;
     spec_.height = out.height_px;
@@ -84,6 +89,8 @@ class MovieRun {
       csv_.append(st, r);
       history_.add(st.time_s, st.functionals);
       if (st.step % frame_every == 0) write_frame();
+      if (options_.checkpoint_every > 0 && st.step % options_.checkpoint_every == 0)
+        write_checkpoint(st.step);
       meter_.update(st.time_s, st.step, summary_.unconverged_steps());
     }
     if (engine_.state().step != last_frame_step_) write_frame();  // the last state, always
@@ -113,6 +120,12 @@ class MovieRun {
     if (options_.png) summary_.add_output(options_.out_dir / "frames");
     if (options_.vtu) summary_.add_output(pvd_.file());
     summary_.write(options_.out_dir / "summary.json", wall_seconds(), false);
+  }
+
+  void write_checkpoint(long step) {
+    char name[48];
+    std::snprintf(name, sizeof name, "step_%06ld.ckpt", step);
+    save_checkpoint(engine_, options_.out_dir / "checkpoints" / name);
   }
 
   bool video_active() const {

@@ -8,6 +8,7 @@
 ///   plot_{distance,height,velocity,mass}.png   the functionals over time
 ///   vtk/frame_<step>.vtu, vtk/frame_interface_<step>.vtp, vtk/frames.pvd
 ///   summary.json              see run_summary.hpp
+///   checkpoints/step_<step>.ckpt   with checkpoint_every > 0
 /// It stops early, cleanly (files closed, plots and summary written), on SIGINT/SIGTERM
 /// or when the engine rejects a step.
 #include <filesystem>
@@ -26,6 +27,12 @@ struct MovieOptions {
   bool png = true;
   bool vtu = true;
   bool quiet = false;  ///< no progress output (warnings still go to stderr)
+  /// Start from this checkpoint (written by save_checkpoint for the same scenario)
+  /// instead of t = 0; the outputs then cover the resumed part only.
+  std::filesystem::path resume_from;
+  /// Write checkpoints/step_<step>.ckpt every this many steps (0: never), so that a
+  /// long run can be resumed or a late event re-run from a nearby state.
+  long checkpoint_every = 0;
 };
 
 /// How the run ended.

@@ -120,6 +120,35 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   }
 }
 
+TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
+  const fs::path full = fresh_dir("checkpointed"), resumed = fresh_dir("resumed");
+  const std::vector<std::string> quiet_csv{"--no-png", "--no-video", "--no-vtu", "--quiet"};
+  std::vector<std::string> args{kScenario.string(), full.string(), "--checkpoint-every", "4"};
+  args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
+  ASSERT_EQ(wait_exit_code(start_movie(args, full.string() + ".log")), 0)
+      << read_text(full.string() + ".log");
+  EXPECT_TRUE(fs::exists(full / "checkpoints/step_000004.ckpt"));
+  EXPECT_TRUE(fs::exists(full / "checkpoints/step_000008.ckpt"));
+  EXPECT_FALSE(fs::exists(full / "checkpoints/step_000010.ckpt"));
+
+  args = {kScenario.string(), resumed.string(), "--resume",
+          (full / "checkpoints/step_000004.ckpt").string()};
+  args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
+  ASSERT_EQ(wait_exit_code(start_movie(args, resumed.string() + ".log")), 0)
+      << read_text(resumed.string() + ".log");
+  const std::vector<std::string> a = read_lines(full / "functionals.csv");
+  const std::vector<std::string> b = read_lines(resumed / "functionals.csv");
+  ASSERT_EQ(a.size(), 11u);
+  ASSERT_EQ(b.size(), 7u) << "header + steps 5..10";
+  for (std::size_t i = 1; i < b.size(); ++i) EXPECT_EQ(b[i], a[i + 4]) << "row " << i;
+
+  // A checkpoint of another scenario is refused with a message, not run.
+  args = {kScenario.string(), resumed.string(), "--set", "/solid/mu_pa=4e5", "--resume",
+          (full / "checkpoints/step_000004.ckpt").string(), "--quiet"};
+  EXPECT_EQ(wait_exit_code(start_movie(args, resumed.string() + ".log")), 2);
+  EXPECT_NE(read_text(resumed.string() + ".log").find("step_000004.ckpt"), std::string::npos);
+}
+
 TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   const fs::path out = fresh_dir("interrupted");
   const auto start = std::chrono::steady_clock::now();
