@@ -4,10 +4,15 @@
 #
 # A run is one line "NAME SCENARIO [--set KEY=VALUE ...]"; its output goes to
 # $study_out/NAME/{functionals.csv,summary.json,log.txt}.
+# FSI_MOVIE=path runs another fsi-movie (e.g. a copy, so that rebuilding the tree during
+# a long study does not swap the library under running processes). Every run uses the
+# failure policy halve_step: a step Newton cannot finish within its budget is retried
+# with k/2, k/4, k/8 before it is accepted and flagged.
 
 study_apps_or_die() {
   [ -n "${FSI_STUDY_NO_BUILD:-}" ] || tools/build >/dev/null
   local app
+  [ -n "${FSI_MOVIE:-}" ] && [ ! -x "$FSI_MOVIE" ] && { echo "$0: FSI_MOVIE=$FSI_MOVIE is not executable" >&2; exit 3; }
   for app in fsi-movie fsi-plot; do
     if [ ! -x "build/apps/$app" ]; then
       echo "$0: build/apps/$app is missing (apps/$app.cpp not in this tree or not built);" \
@@ -26,7 +31,8 @@ study_run_one() {
   fi
   mkdir -p "$dir"
   local start=$SECONDS
-  if OPENBLAS_NUM_THREADS=1 build/apps/fsi-movie "$scenario" "$dir" "$@" --end-time "$end_time" \
+  if OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" \
+       --set /numerics/failure_policy='"halve_step"' --end-time "$end_time" \
        --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
     echo "finished $dir in $((SECONDS - start)) s"
   else
@@ -37,7 +43,7 @@ study_run_one() {
 # study_run_all JOBS END_TIME < lines: the runs, JOBS at a time.
 study_run_all() {
   local jobs=$1 end_time=$2
-  export -f study_run_one; export study_out
+  export -f study_run_one; export study_out FSI_MOVIE
   # Each line becomes the arguments of one study_run_one call (words split by the shell).
   xargs -P "$jobs" -L 1 bash -c 'study_run_one "$0" "$@"' "$end_time"
 }

@@ -23,6 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// A discrete body that lost (or gained) half its mass is no longer a simulation of
+/// the scenario (it happens only after a failed step near a wall): stop instead of
+/// spending hours on it. Normal runs stay below 1e-2.
+constexpr double kLostBodyMassError = 0.5;
+
 class MovieRun {
  public:
   MovieRun(const Scenario& scenario, const MovieOptions& options)
@@ -88,6 +93,15 @@ class MovieRun {
       }
       csv_.append(st, r);
       history_.add(st.time_s, st.functionals);
+      if (!(st.functionals.mass_error <= kLostBodyMassError)) {
+        char why[160];
+        std::snprintf(why, sizeof why,
+                      "the body degenerated at t = %.6g s (relative mass error %.3g > %.2g): stopped",
+                      st.time_s, st.functionals.mass_error, kLostBodyMassError);
+        meter_.note(std::string("fsi-movie: ") + why);
+        summary_.set_stop_reason(why);
+        break;
+      }
       if (st.step % frame_every == 0) write_frame();
       if (options_.checkpoint_every > 0 && st.step % options_.checkpoint_every == 0)
         write_checkpoint(st.step);

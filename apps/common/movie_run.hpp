@@ -10,7 +10,7 @@
 ///   summary.json              see run_summary.hpp
 ///   checkpoints/step_<step>.ckpt   with checkpoint_every > 0
 /// It stops early, cleanly (files closed, plots and summary written), on SIGINT/SIGTERM
-/// or when the engine rejects a step.
+/// when the engine rejects a step, or when the body degenerates (mass error > 50%).
 #include <filesystem>
 #include <fsi/renderer.hpp>
 #include <fsi/scenario.hpp>

@@ -65,7 +65,15 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     result.non_finite = true;
     return result;
   }
-  const double tol = std::max(options.rel_tol * current, options.abs_tol);
+  // The tolerance is relative to the step's initial residual measured with the row scale
+  // of the factorization in use. A factorization reused from an earlier step carries that
+  // step's row scale, which on a changed cut can be off by orders of magnitude (a sliver
+  // sub-element's tiny row becomes a normal one); every refactorization therefore
+  // re-measures the initial residual with the new scale. Otherwise a step would "converge"
+  // six orders of magnitude short of the others.
+  const Eigen::VectorXd r_start = r;
+  double tol = std::max(options.rel_tol * current, options.abs_tol);
+  const auto rescale_tolerance = [&] { tol = std::max(options.rel_tol * norm(r_start), options.abs_tol); };
   if (current <= options.abs_tol) {
     result.converged = true;
     return result;
@@ -76,6 +84,7 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     if (need_refactor && !fresh) {
       if (!refactorize(system, x, r, result)) break;
       current = norm(r);
+      rescale_tolerance();
       fresh = true;
     }
     auto t0 = std::chrono::steady_clock::now();

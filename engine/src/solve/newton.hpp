@@ -11,7 +11,8 @@
 /// line search (up to 3 halvings) guards against overshooting.
 ///
 /// Residual norm: max_i |R_i| / max_j |J_ij| (rows scaled by the Jacobian of the last
-/// factorization): comparable across the velocity, displacement and pressure rows.
+/// factorization): comparable across the velocity, displacement and pressure rows. The
+/// relative tolerance is re-based whenever the scale changes (see solve()).
 #include <memory>
 #include <vector>
 
