@@ -138,6 +138,8 @@ struct Engine::Impl {
   }
 
   /// One attempt at a step of size k on the geometry cut_next. Does not touch the state.
+  int last_ips_failures = 0;  ///< of the latest attempt (diagnostics for the step report)
+
   solve::NewtonResult attempt(double k, const fe::QuadratureTable& quad, Eigen::VectorXd& x,
                               StepReport& report) {
     auto t0 = std::chrono::steady_clock::now();
@@ -152,9 +154,7 @@ struct Engine::Impl {
         scenario.body, scenario.walls, mo, old);
     system.set_old_values(std::move(old));
     report.mapping_seconds += seconds_since(t0);
-    if (ms.ips_failures > 0) {
-      report.message += std::to_string(ms.ips_failures) + " IPS point(s) did not converge; ";
-    }
+    last_ips_failures = ms.ips_failures;  // reported once, for the attempt that counts
 
     x = initial_guess();
     solve::NewtonOptions no;
@@ -268,6 +268,8 @@ struct Engine::Impl {
       report.events.push_back({StepEvent::Kind::contact_force_active, state.time_s, {}, -1,
                                "penalty contact active, max pressure " +
                                    std::to_string(system.max_contact_pressure()) + " Pa"});
+    if (last_ips_failures > 0)
+      report.message += std::to_string(last_ips_failures) + " IPS point(s) did not converge";
     report.time_step_s = k;
     report.time_s = state.time_s;
     std::ostringstream msg;
