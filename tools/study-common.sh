@@ -64,3 +64,9 @@ study_contacts() {
 study_first_contact_time() {
   study_contacts "$1" | awk -F';' 'NF { split($1, a, "@"); print a[2] }'
 }
+
+# study_xmin_args END_TIME XMIN: "--xmin XMIN" when the runs reach past it (a zoom on the
+# contact interval), nothing for short runs.
+study_xmin_args() {
+  awk -v e="$1" -v x="$2" 'BEGIN { if (e > x + 0.1) print "--xmin", x }'
+}
