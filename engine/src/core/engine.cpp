@@ -137,9 +137,9 @@ struct Engine::Impl {
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
   }
 
-  /// One attempt at a step of size k on the geometry cut_next. Does not touch the state.
   int last_ips_failures = 0;  ///< of the latest attempt (diagnostics for the step report)
 
+  /// One attempt at a step of size k on the geometry cut_next. Does not touch the state.
   solve::NewtonResult attempt(double k, const fe::QuadratureTable& quad, Eigen::VectorXd& x,
                               StepReport& report) {
     auto t0 = std::chrono::steady_clock::now();
