@@ -7,7 +7,8 @@
 # FSI_MOVIE=path runs another fsi-movie (e.g. a copy, so that rebuilding the tree during
 # a long study does not swap the library under running processes). Every run uses the
 # failure policy halve_step: a step Newton cannot finish within its budget is retried
-# with k/2, k/4, k/8 before it is accepted and flagged.
+# with k/2, k/4, k/8 before it is accepted and flagged. Checkpoints every 250 steps
+# ($study_out/NAME/checkpoints/) let a run be inspected or continued with fsi-step/fsi-movie.
 
 study_apps_or_die() {
   [ -n "${FSI_STUDY_NO_BUILD:-}" ] || tools/build >/dev/null
@@ -33,7 +34,7 @@ study_run_one() {
   local start=$SECONDS
   if OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" \
        --set /numerics/failure_policy='"halve_step"' --end-time "$end_time" \
-       --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
+       --checkpoint-every 250 --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
     echo "finished $dir in $((SECONDS - start)) s"
   else
     echo "FAILED $dir (exit $?, see $dir/log.txt)" >&2

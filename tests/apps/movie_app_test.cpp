@@ -142,6 +142,18 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
   ASSERT_EQ(b.size(), 7u) << "header + steps 5..10";
   for (std::size_t i = 1; i < b.size(); ++i) EXPECT_EQ(b[i], a[i + 4]) << "row " << i;
 
+  // A finished run can be extended: the end time is not part of the fingerprint.
+  const fs::path extended = fresh_dir("extended");
+  args = {kScenario.string(), extended.string(), "--end-time", "0.12", "--resume",
+          (full / "checkpoints/step_000008.ckpt").string()};
+  args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
+  ASSERT_EQ(wait_exit_code(start_movie(args, extended.string() + ".log")), 0)
+      << read_text(extended.string() + ".log");
+  const std::vector<std::string> c = read_lines(extended / "functionals.csv");
+  ASSERT_EQ(c.size(), 5u) << "header + steps 9..12";
+  EXPECT_EQ(c[1], a[9]);
+  EXPECT_EQ(c[2], a[10]);
+
   // A checkpoint of another scenario is refused with a message, not run.
   args = {kScenario.string(), resumed.string(), "--set", "/solid/mu_pa=4e5", "--resume",
           (full / "checkpoints/step_000004.ckpt").string(), "--quiet"};

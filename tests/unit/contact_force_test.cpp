@@ -1,6 +1,6 @@
 // The penalty contact force of Sect. 12.5 as assembled into the residual: zero beyond
 // dist_0, and near the ground it equals int_I P_c n_s (P_c = gamma_c (dist_0 - d)/d) and
-// pushes the ball away from the wall.
+// pushes the ball away from the wall; bounded where the ball really touches.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -127,6 +127,17 @@ TEST(ContactForce, GrowsAsTheGapCloses) {
   const double near = -row_sum(contact_residual(3e-3).force).y();
   EXPECT_GT(far, 0.0);
   EXPECT_GT(near, 2.0 * far);
+}
+
+TEST(ContactForce, BoundedWhereTheBodyReallyTouches) {
+  // The ball reaches 0.5 mm below the ground line: the interface ends on the wall, where
+  // the chapter's P_c is infinite. With dist >= min_dist_fraction * dist_0 (0.1) the
+  // pressure stays between 9 and 10 gamma_c there, and still pushes the ball up.
+  const ContactResidual c = contact_residual(-5e-4);
+  EXPECT_LE(c.max_pressure_pa, 10.0 * kGammaC);
+  EXPECT_GE(c.max_pressure_pa, 9.0 * kGammaC);
+  EXPECT_TRUE(c.force.allFinite());
+  EXPECT_LT(row_sum(c.force).y(), 0.0);
 }
 
 }  // namespace

@@ -93,6 +93,7 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   renamed.source = "elsewhere.json";
   renamed.output.width_px = 640;
   renamed.output.field = "p";
+  renamed.numerics.end_time_s = 7.5;  // a finished run may be continued to a later end
   EXPECT_EQ(fsi::fingerprint(renamed), f);
 
   fsi::Scenario b = a;
@@ -107,12 +108,15 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   fsi::Scenario e = a;
   e.numerics.failure_policy = fsi::FailurePolicy::halve_step;
   EXPECT_NE(fsi::fingerprint(e), f);
+  fsi::Scenario g = a;
+  g.contact.min_dist_fraction = 0.2;
+  EXPECT_NE(fsi::fingerprint(g), f);
 }
 
 TEST(ScenarioJson, FingerprintIsPinned) {
   // Changing this value invalidates every checkpoint written so far: bump the checkpoint
   // format version with it.
-  EXPECT_EQ(fsi::fingerprint(fsi::example1_scenario()), "e5eeb9d6782d23c8");
+  EXPECT_EQ(fsi::fingerprint(fsi::example1_scenario()), "039e20b201cdf25e");
 }
 
 TEST(ScenarioJson, RejectsBrokenJsonWithLineAndColumn) {

@@ -82,6 +82,9 @@ struct NumericsSpec {
   int max_halvings = 3;
 
   double cip_gamma = 0.05;        ///< gamma of S_aniso (scaled by 1/(rho_f nu_f))
+  /// Weight w of the transient term in the CIP scaling gamma h^2 / (rho_f nu_f + w rho_f h^2 / k)
+  /// (ours): 1 scales like PSPG's tau ~ k / rho, 0 is the chapter's Stokes scaling.
+  double cip_transient_weight = 1.0;
   double solid_alpha = 0.1;       ///< alpha of the solid velocity stabilization (12.7)
   double solid_s = 2.0;           ///< exponent s in alpha h^s
   double blend_eps_patches = 1.5; ///< eps of the T_m blend g, in patch sizes
@@ -94,6 +97,12 @@ struct NumericsSpec {
 struct ContactSpec {
   double gamma_c = 0.0;  ///< [N/m] (0 disables contact)
   double dist0_m = 0.0;  ///< reference distance dist_0 [m]
+  /// P_c is evaluated with dist >= min_dist_fraction * dist_0 (ours; the chapter is
+  /// silent). The formula is infinite where the body really touches (dist = 0); bounded,
+  /// it is 9 gamma_c at most for the default 0.1, below every rest distance the chapter
+  /// reports (dist >= 0.18 dist_0), so a contact the force could not prevent no longer
+  /// throws the body off with an arbitrarily large impulse.
+  double min_dist_fraction = 0.1;
 };
 
 struct OutputSpec {

@@ -77,7 +77,7 @@ void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& 
   cip_ = pattern_;
   const double mu = coefficients_.rho_f * coefficients_.nu_f;
   const double gamma = scenario_.numerics.cip_gamma / mu;
-  const double transient = coefficients_.rho_f / (time_step_s * mu);
+  const double transient = scenario_.numerics.cip_transient_weight * coefficients_.rho_f / (time_step_s * mu);
   forms::add_pressure_stabilization(mesh_, cut, fe::build_stabilization_edges(cut), gamma,
                                     kFieldsPerNode, kP, cip_, transient);
   build_open_sides();
@@ -156,7 +156,7 @@ void FsiSystem::build_contact_forces() {
       const mesh::Vec2 x = seg.a + s * d;
       const double dist = mesh::distance_to_walls(scenario_.walls, x).distance_m;
       if (dist >= dist0) continue;
-      const double pc = gamma_c * (dist0 - dist) / std::max(dist, 1e-3 * dist0);
+      const double pc = gamma_c * (dist0 - dist) / std::max(dist, scenario_.contact.min_dist_fraction * dist0);
       max_contact_pressure_ = std::max(max_contact_pressure_, pc);
       const double w = 0.5 * len * pc;
       for (int f = 0; f < 2; ++f) {

@@ -20,8 +20,9 @@
 
 namespace fsi::io {
 
-/// Bump when the layout or the meaning of a stored field changes.
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+/// Bump when the layout or the meaning of a stored field changes (3: the scenario
+/// fingerprint leaves out the end time and covers contact.min_dist_fraction).
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 
 /// Writes `state` to `file` atomically (a temporary file in the same folder, then a
 /// rename): a crash mid-write leaves the previous checkpoint intact. Throws InputError if

@@ -85,9 +85,11 @@ std::string to_json(const Scenario& scenario) {
 std::string fingerprint(const Scenario& scenario) {
   io::JsonWriter<nlohmann::json> writer;  // sorted keys: independent of member order
   io::visit_fields(writer, scenario);
-  // The name and the output settings do not change the physics or the numerics.
+  // The name, the output settings and the end time do not change any step: a finished
+  // run can be resumed from its checkpoint with a later end time.
   writer.object.erase("name");
   writer.object.erase("output");
+  writer.object["numerics"].erase("end_time_s");
   const std::string canonical =
       writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   char hex[17];

@@ -140,6 +140,7 @@ void visit_fields(V& v, S& n) {
   v("failure_policy", n.failure_policy, Choice{kFailurePolicyNames});
   v("max_halvings", n.max_halvings, Int{0, 20});
   v("cip_gamma", n.cip_gamma, Real{0.0, 1.0e3});
+  v("cip_transient_weight", n.cip_transient_weight, Real{0.0, 1.0e3});
   v("solid_alpha", n.solid_alpha, Real{0.0, 1.0e3});
   v("solid_s", n.solid_s, Real{0.0, 4.0});
   v("blend_eps_patches", n.blend_eps_patches, Real{0.0, 100.0, true, false, "patches"});
@@ -151,6 +152,7 @@ template <class V, Like<ContactSpec> S>
 void visit_fields(V& v, S& c) {
   v("gamma_c", c.gamma_c, Real{0.0, 1.0e9, false, false, "N/m (0: no contact force)"});
   v("dist0_m", c.dist0_m, Real{0.0, 1.0e3, false, false, "m"});
+  v("min_dist_fraction", c.min_dist_fraction, Real{0.0, 1.0, true, false, "(fraction of dist0_m)"});
 }
 
 template <class V, Like<OutputSpec> S>
