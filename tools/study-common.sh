@@ -41,24 +41,33 @@ study_run_one() {
   fi
 }
 
-# study_run_all JOBS END_TIME < lines: the runs, JOBS at a time.
+# study_run_all JOBS END_TIME < lines: the runs, JOBS at a time. With study_only set (a
+# comma-separated list of run names, --only) just those; with study_summary_only=1
+# (--summary-only) none: the summary then covers the runs that exist.
 study_run_all() {
   local jobs=$1 end_time=$2
   export -f study_run_one; export study_out FSI_MOVIE
+  if [ "${study_summary_only:-0}" = 1 ]; then cat > /dev/null; return 0; fi
   # Each line becomes the arguments of one study_run_one call (words split by the shell).
-  xargs -P "$jobs" -L 1 bash -c 'study_run_one "$0" "$@"' "$end_time"
+  awk -v only="${study_only:-}" 'BEGIN { n = split(only, o, ","); for (i = 1; i <= n; ++i) keep[o[i]] = 1 }
+                                 n == 0 || ($1 in keep)' |
+    xargs -P "$jobs" -L 1 bash -c 'study_run_one "$0" "$@"' "$end_time"
 }
 
-# study_contacts SUMMARY_JSON: the real-contact events as "wall@time;wall@time...", one per
-# touch-down: the engine reports every step the body touches a wall, so consecutive
-# reports on the same wall (less than 0.01 s apart) are one contact.
+# study_contacts SUMMARY_JSON: the touch-downs as "wall@time;wall@time..." (fsi-movie's
+# "contact_sequence": one entry per touch-down, wall by wall). A summary written before
+# that key existed gives its first real contact from "events" (kind, first_time_s, wall
+# on separate lines of the pretty-printed JSON).
 study_contacts() {
   [ -f "$1" ] || return 0
-  grep -o '{[^{}]*"kind": *"real_contact"[^{}]*}' "$1" |
-    sed -E 's/.*"time_s": *([-0-9.eE+]+).*"wall": *(-?[0-9]+).*/\2 \1/' |
-    awk '{ if ($1 != wall || $2 - last > 0.01) { out = out (n++ ? ";" : "") $1 "@" $2 }
-           wall = $1; last = $2 }
-         END { print out }'
+  if grep -q '"contact_sequence"' "$1"; then
+    sed -n -E 's/.*"contact_sequence": *"([^"]*)".*/\1/p' "$1"
+    return 0
+  fi
+  awk '/"kind": *"real_contact"/ { inside = 1; next }
+       inside && /"first_time_s"/ { t = $2; sub(/,$/, "", t) }
+       inside && /"wall"/ { w = $2; sub(/,$/, "", w); printf "%s@%.4f\n", w, t; exit }
+       inside && /^ *}/ { inside = 0 }' "$1"
 }
 
 # study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).

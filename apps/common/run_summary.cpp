@@ -2,6 +2,7 @@
 #include "run_summary.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -46,9 +47,14 @@ void RunSummary::record_step(const StepReport& report, const State& state) {
     min_distance_m_ = d;
     min_distance_time_s_ = state.time_s;
   }
+  std::set<int> touching;
   for (const StepEvent& e : report.events) {
     ++events_.try_emplace(e.kind, EventRecord{e, 0}).first->second.count;
+    if (e.kind != StepEvent::Kind::real_contact) continue;
+    touching.insert(e.wall);
+    if (!touching_walls_.contains(e.wall)) touch_downs_.push_back(e);
   }
+  touching_walls_ = std::move(touching);
 }
 
 void RunSummary::add_output(const std::filesystem::path& file) {
@@ -89,6 +95,16 @@ nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool is_final,
     events.push_back(std::move(e));
   }
   j["events"] = std::move(events);
+  nlohmann::ordered_json contacts = nlohmann::ordered_json::array();
+  std::string sequence;
+  for (const StepEvent& c : touch_downs_) {
+    contacts.push_back({{"wall", c.wall}, {"time_s", c.time_s}, {"where_m", {c.where_m.x, c.where_m.y}}});
+    char item[48];
+    std::snprintf(item, sizeof item, "%s%d@%.4f", sequence.empty() ? "" : ";", c.wall, c.time_s);
+    sequence += item;
+  }
+  j["contacts"] = std::move(contacts);
+  j["contact_sequence"] = sequence;
   j["final_functionals"] = functionals_json(last_);
   nlohmann::ordered_json outputs = nlohmann::ordered_json::array();
   for (const auto& f : outputs_) outputs.push_back(f.lexically_relative(folder).generic_string());

@@ -6,11 +6,15 @@
 ///   place and count: real contact, active penalty contact, halved or rejected steps,
 ///   non-finite values), the minimal distance and when it occurred, the final
 ///   functionals, the outputs written, whether the run was interrupted (Ctrl-C) and
-///   whether this is the final summary.
+///   whether this is the final summary; and every touch-down on a wall ("contacts", and
+///   the same on one line as "contact_sequence": "wall@time;wall@time..."), for the study
+///   scripts: the engine reports real contact in every step the body touches a wall, a
+///   touch-down is the first of a run of such steps on the same wall.
 #include <filesystem>
 #include <fsi/engine.hpp>
 #include <fsi/scenario.hpp>
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -55,6 +59,8 @@ class RunSummary {
   bool have_min_ = false;
   double min_distance_m_ = 0.0, min_distance_time_s_ = 0.0;
   std::map<StepEvent::Kind, EventRecord> events_;
+  std::vector<StepEvent> touch_downs_;  ///< real-contact events that start a contact
+  std::set<int> touching_walls_;        ///< walls touched in the latest step
   std::vector<std::filesystem::path> outputs_;
   bool interrupted_ = false;
   std::string stop_reason_;
