@@ -70,6 +70,13 @@ study_contacts() {
        inside && /^ *}/ { inside = 0 }' "$1"
 }
 
+# study_run_finished DIR: the run in DIR ended (its final summary, not interrupted; a run
+# stopped early because the body degenerated counts as finished).
+study_run_finished() {
+  [ -f "$1/summary.json" ] && grep -q '"final": *true' "$1/summary.json" &&
+    ! grep -q '"interrupted": *true' "$1/summary.json"
+}
+
 # study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).
 study_first_contact_time() {
   study_contacts "$1" | awk -F';' 'NF { split($1, a, "@"); print a[2] }'
