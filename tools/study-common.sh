@@ -77,6 +77,11 @@ study_run_finished() {
     ! grep -q '"interrupted": *true' "$1/summary.json"
 }
 
+# study_stop_reason SUMMARY_JSON: why the run stopped before its end time (empty if it did not).
+study_stop_reason() {
+  sed -n -E 's/.*"stop_reason": *"([^"]*)".*/\1/p' "$1"
+}
+
 # study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).
 study_first_contact_time() {
   study_contacts "$1" | awk -F';' 'NF { split($1, a, "@"); print a[2] }'

@@ -101,6 +101,9 @@ Image draw_plot(Canvas& c, const PlotSpec& spec) {
     for (std::size_t i = 0; i < se.x.size(); ++i) {
       if (!usable(se.x[i], se.y[i], spec.log_y)) continue;
       lx.add(se.x[i]);
+      // The y range covers what is shown: with fixed x limits (a zoom on the contact
+      // interval), only the points between them.
+      if ((spec.x_min && se.x[i] < *spec.x_min) || (spec.x_max && se.x[i] > *spec.x_max)) continue;
       ly.add(se.y[i]);
     }
   }

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fsi/image_compare.hpp>
 #include <fsi/plot.hpp>
 #include <fsi/renderer.hpp>
 
@@ -39,6 +41,27 @@ TEST(Plot, LogAxisGolden) {
   p.series[0].y[10] = 0.0;  // not drawable on a log axis: breaks the line, no crash
   Renderer r{GlBackend::osmesa};
   testing::expect_matches_golden("plot_log", r.plot(p));
+}
+
+TEST(Plot, ZoomScalesTheYAxisToWhatIsShown) {
+  // x_min = 1: the y axis spans the visible part of the curve, exactly as if the points
+  // left of x_min were not there (a zoom on the contact interval must not stay scaled
+  // to the fall from 0.6 m).
+  PlotSpec full = functionals_plot();
+  full.series.resize(1);
+  full.x_min = 1.0;
+  PlotSpec cut = full;
+  PlotSeries& g = cut.series[0];
+  const auto first = std::find_if(g.x.begin(), g.x.end(), [](double x) { return x >= 1.0; });
+  const auto k = first - g.x.begin();
+  g.x.erase(g.x.begin(), g.x.begin() + k);
+  g.y.erase(g.y.begin(), g.y.begin() + k);
+  const ImageComparison c = compare_images(plot(cut), plot(full));
+  EXPECT_TRUE(c.same) << c.verdict;
+  PlotSpec unscaled = cut;
+  unscaled.y_min = 0.0;
+  unscaled.y_max = 0.5;
+  EXPECT_FALSE(compare_images(plot(unscaled), plot(full)).same);
 }
 
 TEST(Plot, FreeFunctionAndErrors) {
