@@ -98,10 +98,10 @@ struct ContactSpec {
   double gamma_c = 0.0;  ///< [N/m] (0 disables contact)
   double dist0_m = 0.0;  ///< reference distance dist_0 [m]
   /// P_c is evaluated with dist >= min_dist_fraction * dist_0 (ours; the chapter is
-  /// silent). The formula is infinite where the body really touches (dist = 0); bounded,
-  /// it is 9 gamma_c at most for the default 0.1, below every rest distance the chapter
-  /// reports (dist >= 0.18 dist_0), so a contact the force could not prevent no longer
-  /// throws the body off with an arbitrarily large impulse.
+  /// silent). The formula is infinite where the body really touches (dist = 0). Bounded,
+  /// it stays below 10 gamma_c for the default 0.1 and is unchanged at every rest
+  /// distance the chapter reports (dist >= 0.18 dist_0), and a contact the force could
+  /// not prevent no longer throws the body off with an arbitrarily large impulse.
   double min_dist_fraction = 0.1;
 };
 

@@ -21,7 +21,8 @@
 namespace fsi::io {
 
 /// Bump when the layout or the meaning of a stored field changes (3: the scenario
-/// fingerprint leaves out the end time and covers contact.min_dist_fraction).
+/// fingerprint leaves out the end time and covers contact.min_dist_fraction and
+/// numerics.cip_transient_weight).
 inline constexpr std::uint32_t kCheckpointVersion = 3;
 
 /// Writes `state` to `file` atomically (a temporary file in the same folder, then a
