@@ -82,6 +82,14 @@ study_stop_reason() {
   sed -n -E 's/.*"stop_reason": *"([^"]*)".*/\1/p' "$1"
 }
 
+# study_stopped_early DIR: true (and says why) when the run in DIR stopped before its end
+# time, e.g. because the body degenerated: it has no rest distance or final position.
+study_stopped_early() {
+  local why
+  why=$(study_stop_reason "$1/summary.json")
+  [ -n "$why" ] && echo "$1: $why"
+}
+
 # study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).
 study_first_contact_time() {
   study_contacts "$1" | awk -F';' 'NF { split($1, a, "@"); print a[2] }'
