@@ -5,14 +5,17 @@
 //   fsi-movie SCENARIO.json OUTDIR [--set KEY=VALUE ...] [--frame-every N]
 //             [--field vx|vy|vmag|p|umag] [--no-video] [--no-png] [--no-vtu] [--size WxH]
 //             [--fps N] [--zoom x0,y0,x1,y1] [--mesh] [--end-time T] [--quiet]
-//             [--checkpoint-every N] [--resume CHECKPOINT]
+//             [--checkpoint-every N] [--resume CHECKPOINT | --continue]
 //
 // --set changes one scenario key (a path into the scenario's JSON, the value as JSON)
 // before the scenario is validated; --frame-every, --field, --size, --fps, --mesh and
 // --end-time are shorthands for --set on /output/... and /numerics/end_time_s.
 // --checkpoint-every N writes OUTDIR/checkpoints/step_<step>.ckpt every N steps;
 // --resume starts from such a checkpoint (same scenario, same --set changes) instead of
-// t = 0, e.g. to re-run the seconds around a contact with other outputs.
+// t = 0, e.g. to re-run the seconds around a contact with other outputs (the outputs
+// then cover the resumed part only). --continue goes on with the run in OUTDIR from its
+// latest checkpoint (a stopped or finished run, e.g. with a later --end-time):
+// functionals.csv keeps its rows up to that checkpoint and summary.json its touch-downs.
 // Progress goes to stderr (a bar on a terminal). Ctrl-C stops after the current step,
 // closes the movie and writes the plots and summary.json with "interrupted": true.
 // Exit code: 0 done, 1 failed while running, 2 bad input (message + usage), 130
@@ -44,7 +47,7 @@ constexpr const char* kUsage =
     "usage: fsi-movie SCENARIO.json OUTDIR [--set KEY=VALUE ...] [--frame-every N]\n"
     "                 [--field vx|vy|vmag|p|umag] [--no-video] [--no-png] [--no-vtu]\n"
     "                 [--size WxH] [--fps N] [--zoom x0,y0,x1,y1] [--mesh] [--end-time T]\n"
-    "                 [--quiet] [--checkpoint-every N] [--resume CHECKPOINT]\n"
+    "                 [--quiet] [--checkpoint-every N] [--resume CHECKPOINT | --continue]\n"
     "  e.g. fsi-movie assets/scenarios/ball_drop_demo.json out/demo --set /solid/mu_pa=4e5\n";
 
 int usage(const std::string& why) {
@@ -103,6 +106,8 @@ Arguments parse_arguments(int argc, char** argv) {
       a.movie.checkpoint_every = fsi::app::parse_int(value(), 1, 100000000, "command line", opt);
     } else if (opt == "--resume") {
       a.movie.resume_from = value();
+    } else if (opt == "--continue") {
+      a.movie.continue_run = true;
     } else if (opt == "--quiet") {
       a.movie.quiet = true;
     } else if (opt.size() > 1 && opt[0] == '-') {
@@ -115,6 +120,10 @@ Arguments parse_arguments(int argc, char** argv) {
     throw fsi::InputError(
         "command line", "",
         "need SCENARIO.json and OUTDIR, got " + std::to_string(positional.size()) + " argument(s)");
+  }
+  if (a.movie.continue_run && !a.movie.resume_from.empty()) {
+    throw fsi::InputError("command line", "--continue",
+                          "continues from OUTDIR's latest checkpoint: do not give --resume too");
   }
   a.scenario = positional[0];
   a.movie.out_dir = positional[1];

@@ -36,5 +36,7 @@ END {
   if (touched) printf "# real contact at t = %.4f s: the rest of the run is not used\n", t_touch > "/dev/stderr"
   printf "%s,%s,%s,%s,%s\n", nodes, k, (dmin < 1e300 ? sprintf("%.6e", dmin) : ""),
          (dmax >= 0 ? sprintf("%.6e", dmax) : ""), mass
-  printf "# first contact at t = %.4f s, first rebound maximum at t = %.4f s\n", tmin, tmax > "/dev/stderr"
+  printf "# first contact at t = %.4f s", tmin > "/dev/stderr"
+  if (dmax >= 0) printf ", first rebound maximum at t = %.4f s", tmax > "/dev/stderr"
+  printf "\n" > "/dev/stderr"
 }

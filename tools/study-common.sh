@@ -8,7 +8,8 @@
 # a long study does not swap the library under running processes). Every run uses the
 # failure policy halve_step: a step Newton cannot finish within its budget is retried
 # with k/2, k/4, k/8 before it is accepted and flagged. Checkpoints every 250 steps
-# ($study_out/NAME/checkpoints/) let a run be inspected or continued with fsi-step/fsi-movie.
+# ($study_out/NAME/checkpoints/) let a run be inspected, and a run that stopped before its
+# end goes on from the latest one when the study is started again (fsi-movie --continue).
 
 study_apps_or_die() {
   [ -n "${FSI_STUDY_NO_BUILD:-}" ] || tools/build >/dev/null
@@ -31,8 +32,13 @@ study_run_one() {
     echo "reusing $dir"; return 0
   fi
   mkdir -p "$dir"
+  # A run that stopped (interrupted, killed, machine gone) goes on from its latest checkpoint.
+  local go_on=()
+  if compgen -G "$dir/checkpoints/step_*.ckpt" > /dev/null && [ -f "$dir/functionals.csv" ]; then
+    go_on=(--continue); echo "continuing $dir from $(ls "$dir"/checkpoints/step_*.ckpt | tail -1)"
+  fi
   local start=$SECONDS
-  if OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" \
+  if OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" "${go_on[@]}" \
        --set /numerics/failure_policy='"halve_step"' --end-time "$end_time" \
        --checkpoint-every 250 --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
     echo "finished $dir in $((SECONDS - start)) s"

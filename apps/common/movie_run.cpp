@@ -34,11 +34,14 @@ class MovieRun {
       : options_(options),
         engine_(scenario),
         summary_(scenario),
-        csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true),
+        earlier_(options.continue_run ? std::optional(read_earlier_run(options.out_dir)) : std::nullopt),
+        csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true,
+             earlier_ ? earlier_->csv_rows : std::vector<std::string>{}),
         pvd_(options.out_dir / "vtk" / "frames.pvd"),
         meter_(0.0, scenario.numerics.end_time_s, options.quiet) {
-    if (!options.resume_from.empty()) {
-      load_checkpoint(engine_, options.resume_from);
+    if (earlier_) options_.resume_from = earlier_->checkpoint;
+    if (!options_.resume_from.empty()) {
+      load_checkpoint(engine_, options_.resume_from);
       meter_ = ProgressMeter(engine_.state().time_s, scenario.numerics.end_time_s, options.quiet);
     }
     if (options.checkpoint_every > 0) fs::create_directories(options.out_dir / "checkpoints");
@@ -64,7 +67,12 @@ class MovieRun {
     if (options.video)
       meter_.note("fsi-movie: built without video (FSI_WITH_VIDEO=OFF): no movie.mp4");
 #endif
-    history_.add(engine_.state().time_s, engine_.state().functionals);
+    if (earlier_) {
+      summary_.continue_from(*earlier_);
+      for (const EarlierRun::Row& r : earlier_->rows) history_.add(r.time_s, r.functionals);
+    } else {
+      history_.add(engine_.state().time_s, engine_.state().functionals);
+    }
   }
 
   MovieResult run() {
@@ -169,6 +177,7 @@ class MovieRun {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   Engine engine_;
   RunSummary summary_;
+  std::optional<EarlierRun> earlier_;  ///< what the continued run left (continue_run)
   io::FunctionalsCsv csv_;
   io::PvdSeries pvd_;
   ProgressMeter meter_;

@@ -30,6 +30,10 @@ struct MovieOptions {
   /// Start from this checkpoint (written by save_checkpoint for the same scenario)
   /// instead of t = 0; the outputs then cover the resumed part only.
   std::filesystem::path resume_from;
+  /// Continue the run in out_dir from its latest checkpoint: functionals.csv keeps the
+  /// earlier rows up to it, summary.json its touch-downs and events (earlier_run.hpp).
+  /// Excludes resume_from.
+  bool continue_run = false;
   /// Write checkpoints/step_<step>.ckpt every this many steps (0: never), so that a
   /// long run can be resumed or a late event re-run from a nearby state.
   long checkpoint_every = 0;

@@ -27,6 +27,31 @@ const char* kind_name(StepEvent::Kind k) {
   return "unknown";
 }
 
+bool kind_from_name(const std::string& name, StepEvent::Kind& kind) {
+  for (StepEvent::Kind k : {StepEvent::Kind::real_contact, StepEvent::Kind::contact_force_active,
+                            StepEvent::Kind::step_halved, StepEvent::Kind::rolled_back,
+                            StepEvent::Kind::non_finite}) {
+    if (name == kind_name(k)) {
+      kind = k;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// An event of an earlier summary.json ("events" or "contacts" entry).
+StepEvent event_from_json(const nlohmann::json& j, StepEvent::Kind kind, const char* time_key) {
+  StepEvent e;
+  e.kind = kind;
+  e.time_s = j.value(time_key, 0.0);
+  e.wall = j.value("wall", -1);
+  e.text = j.value("text", std::string());
+  if (j.contains("where_m") && j["where_m"].is_array() && j["where_m"].size() == 2) {
+    e.where_m = {j["where_m"][0].get<double>(), j["where_m"][1].get<double>()};
+  }
+  return e;
+}
+
 }  // namespace
 
 RunSummary::RunSummary(const Scenario& scenario)
@@ -57,6 +82,44 @@ void RunSummary::record_step(const StepReport& report, const State& state) {
   touching_walls_ = std::move(touching);
 }
 
+void RunSummary::continue_from(const EarlierRun& earlier) {
+  continued_from_step_ = earlier.step;
+  for (const EarlierRun::Row& r : earlier.rows) {
+    ++steps_;
+    if (!r.converged) ++unconverged_;
+    time_s_ = r.time_s;
+    last_ = r.functionals;
+    if (!have_min_ || r.functionals.min_distance_m < min_distance_m_) {
+      have_min_ = true;
+      min_distance_m_ = r.functionals.min_distance_m;
+      min_distance_time_s_ = r.time_s;
+    }
+  }
+  // Events and touch-downs up to the checkpoint's time (half a step of slack for rounding).
+  const double until = earlier.time_s + 1e-9;
+  const nlohmann::json& j = earlier.summary;
+  if (!j.is_object()) return;
+  if (j.contains("events") && j["events"].is_array()) {
+    for (const nlohmann::json& e : j["events"]) {
+      StepEvent::Kind kind;
+      if (!e.is_object() || !kind_from_name(e.value("kind", std::string()), kind)) continue;
+      if (e.value("first_time_s", 1e300) > until) continue;
+      events_[kind] = EventRecord{event_from_json(e, kind, "first_time_s"), 1};
+    }
+  }
+  if (j.contains("contacts") && j["contacts"].is_array()) {
+    for (const nlohmann::json& c : j["contacts"]) {
+      if (!c.is_object() || c.value("time_s", 1e300) > until) continue;
+      touch_downs_.push_back(event_from_json(c, StepEvent::Kind::real_contact, "time_s"));
+    }
+  }
+  // Still touching at the checkpoint: the next step's contact is not a new touch-down.
+  if (!earlier.rows.empty() && earlier.rows.back().functionals.min_distance_m < 1e-12 &&
+      !touch_downs_.empty()) {
+    touching_walls_.insert(touch_downs_.back().wall);
+  }
+}
+
 void RunSummary::add_output(const std::filesystem::path& file) {
   if (std::find(outputs_.begin(), outputs_.end(), file) == outputs_.end()) outputs_.push_back(file);
 }
@@ -68,6 +131,7 @@ nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool is_final,
   j["final"] = is_final;  // false: written during the run (or the process died)
   j["interrupted"] = interrupted_;
   j["stop_reason"] = stop_reason_;
+  if (continued_from_step_ >= 0) j["continued_from_step"] = continued_from_step_;
   j["steps"] = steps_;
   j["simulated_time_s"] = time_s_;
   j["end_time_s"] = end_time_s_;

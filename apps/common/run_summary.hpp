@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "earlier_run.hpp"
+
 namespace fsi::app {
 
 class RunSummary {
@@ -27,6 +29,12 @@ class RunSummary {
 
   /// Records one step's report and the state it left.
   void record_step(const StepReport& report, const State& state);
+  /// Takes over what an earlier run recorded up to its checkpoint (fsi-movie --continue):
+  /// step counts, minimal distance and last functionals from its CSV rows, touch-downs
+  /// and first events before the checkpoint from its summary. An event kind that began
+  /// before the checkpoint keeps its first occurrence; its "steps" count then covers
+  /// that occurrence and the steps after the checkpoint ("continued_from_step" says so).
+  void continue_from(const EarlierRun& earlier);
   /// Records an output file or folder (listed relative to the summary's folder).
   void add_output(const std::filesystem::path& file);
 
@@ -64,6 +72,7 @@ class RunSummary {
   std::vector<std::filesystem::path> outputs_;
   bool interrupted_ = false;
   std::string stop_reason_;
+  long continued_from_step_ = -1;  ///< -1: not a continued run
 };
 
 }  // namespace fsi::app

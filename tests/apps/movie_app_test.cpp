@@ -161,6 +161,36 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
   EXPECT_NE(read_text(resumed.string() + ".log").find("step_000004.ckpt"), std::string::npos);
 }
 
+TEST(MovieApp, ContinuesAStoppedRunInItsFolder) {
+  const std::vector<std::string> quiet_csv{"--no-png", "--no-video", "--no-vtu", "--quiet"};
+  const fs::path straight = fresh_dir("straight"), stopped = fresh_dir("stopped");
+  std::vector<std::string> args{kScenario.string(), straight.string()};
+  args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
+  ASSERT_EQ(wait_exit_code(start_movie(args, straight.string() + ".log")), 0);
+
+  // Stopped after step 6 with a checkpoint at step 4 (steps 5 and 6 are done again).
+  args = {kScenario.string(), stopped.string(), "--end-time", "0.06", "--checkpoint-every", "4"};
+  args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
+  ASSERT_EQ(wait_exit_code(start_movie(args, stopped.string() + ".log")), 0);
+  args = {kScenario.string(), stopped.string(), "--continue"};
+  args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
+  ASSERT_EQ(wait_exit_code(start_movie(args, stopped.string() + ".log")), 0)
+      << read_text(stopped.string() + ".log");
+
+  EXPECT_EQ(read_lines(stopped / "functionals.csv"), read_lines(straight / "functionals.csv"));
+  const auto a = nlohmann::json::parse(read_text(straight / "summary.json"));
+  const auto b = nlohmann::json::parse(read_text(stopped / "summary.json"));
+  EXPECT_EQ(b["steps"], a["steps"]);
+  EXPECT_EQ(b["simulated_time_s"], a["simulated_time_s"]);
+  EXPECT_EQ(b["min_distance"], a["min_distance"]);
+  EXPECT_EQ(b["continued_from_step"], 4);
+
+  // Without checkpoints there is nothing to continue from: a message, not a run.
+  args = {kScenario.string(), straight.string(), "--continue", "--quiet"};
+  EXPECT_EQ(wait_exit_code(start_movie(args, straight.string() + ".log2")), 2);
+  EXPECT_NE(read_text(straight.string() + ".log2").find("checkpoint"), std::string::npos);
+}
+
 TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   const fs::path out = fresh_dir("interrupted");
   const auto start = std::chrono::steady_clock::now();

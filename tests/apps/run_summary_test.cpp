@@ -35,4 +35,44 @@ TEST(RunSummary, ListsEveryTouchDownOnce) {
   EXPECT_DOUBLE_EQ(j["contacts"][0]["where_m"][0].get<double>(), 0.5);
 }
 
+TEST(RunSummary, ContinuedRunKeepsTheTouchDownsBeforeItsCheckpoint) {
+  const fsi::Scenario s = fsi::testing::coarse_example1();
+  // What a stopped run left: touch-downs at 0.2 s (wall 2) and 0.6 s (wall 4), a
+  // checkpoint at 0.4 s while still touching wall 2 (distance 0).
+  fsi::app::RunSummary earlier_summary(s);
+  fsi::State state;
+  for (const auto& [walls, t] : std::vector<std::pair<std::vector<int>, double>>{
+           {{}, 0.1}, {{2}, 0.2}, {{2}, 0.3}, {{2}, 0.4}, {{}, 0.5}, {{4}, 0.6}}) {
+    state.time_s = t;
+    earlier_summary.record_step(touching(walls, t), state);
+  }
+  fsi::app::EarlierRun earlier;
+  earlier.step = 4;
+  earlier.time_s = 0.4;
+  earlier.summary = nlohmann::json::parse(earlier_summary.to_json(1.0, false, ".").dump());
+  for (int i = 1; i <= 4; ++i) {
+    fsi::app::EarlierRun::Row r{};
+    r.step = i;
+    r.time_s = 0.1 * i;
+    r.functionals.min_distance_m = i >= 2 ? 0.0 : 0.01;
+    r.converged = i != 3;
+    earlier.rows.push_back(r);
+  }
+
+  fsi::app::RunSummary summary(s);
+  summary.continue_from(earlier);
+  // The continued run: still on wall 2 at 0.5 s (not a new touch-down), then wall 4.
+  for (const auto& [walls, t] : std::vector<std::pair<std::vector<int>, double>>{
+           {{2}, 0.5}, {{}, 0.6}, {{4}, 0.7}}) {
+    state.time_s = t;
+    summary.record_step(touching(walls, t), state);
+  }
+  const auto j = summary.to_json(1.0, true, ".");
+  EXPECT_EQ(j["contact_sequence"], "2@0.2000;4@0.7000");
+  EXPECT_EQ(j["steps"], 7);
+  EXPECT_EQ(j["unconverged_steps"], 1);
+  EXPECT_EQ(j["continued_from_step"], 4);
+  EXPECT_DOUBLE_EQ(j["min_distance"]["time_s"].get<double>(), 0.2);
+}
+
 }  // namespace

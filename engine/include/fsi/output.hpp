@@ -102,6 +102,10 @@ class FunctionalsCsv {
   /// newton_iterations and converged; rows must then come with a StepReport.
   /// Throws InputError if the file cannot be opened.
   FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns);
+  /// The same, then `first_rows` (rows of an earlier run that this one continues,
+  /// written as they are).
+  FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns,
+                 const std::vector<std::string>& first_rows);
 
   /// Appends the functionals of `state` (its step and time). Only without newton columns.
   void append(const State& state);

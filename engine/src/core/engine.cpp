@@ -290,7 +290,13 @@ Engine& Engine::operator=(Engine&&) noexcept = default;
 StepReport Engine::step() { return impl_->step(); }
 const State& Engine::state() const { return impl_->state; }
 const Scenario& Engine::scenario() const { return impl_->scenario; }
-void Engine::set_numerics(const NumericsSpec& numerics) { impl_->numerics = numerics; }
+void Engine::set_numerics(const NumericsSpec& numerics) {
+  Scenario changed = impl_->scenario;  // same checks as a scenario file's numerics
+  changed.numerics = numerics;
+  validate(changed);
+  impl_->numerics = numerics;
+  impl_->system.set_numerics(numerics);  // stabilization weights live in the system
+}
 
 void Engine::set_state(const State& state) {
   const std::size_t n = impl_->mesh.num_nodes(), e = impl_->mesh.edges.size();

@@ -26,7 +26,7 @@ solve::FieldCoupling neighbor_coupling() {
 }  // namespace
 
 FsiSystem::FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh)
-    : scenario_(scenario), mesh_(mesh) {
+    : scenario_(scenario), numerics_(scenario.numerics), mesh_(mesh) {
   forms::FsiCoefficients& c = coefficients_;
   c.k_s = scenario.numerics.time_step_s;
   c.rho_f = scenario.fluid.density_kgpm3;
@@ -36,8 +36,7 @@ FsiSystem::FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh)
   c.lambda_s = scenario.solid.lambda_pa;
   c.gx = scenario.gravity_mps2.x;
   c.gy = scenario.gravity_mps2.y;
-  c.alpha = scenario.numerics.solid_alpha;
-  c.s = scenario.numerics.solid_s;
+  set_numerics(numerics_);
 
   pattern_ = solve::build_pattern(mesh, kFieldsPerNode, patch_coupling(), neighbor_coupling());
   // No-slip walls: v = 0 on their nodes.
@@ -51,6 +50,12 @@ FsiSystem::FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh)
     const int row = pattern_.innerIndexPtr()[k];
     if (row_slot[row] >= 0) dirichlet_row_entries_[row_slot[row]].push_back(k);
   }
+}
+
+void FsiSystem::set_numerics(const NumericsSpec& numerics) {
+  numerics_ = numerics;
+  coefficients_.alpha = numerics.solid_alpha;
+  coefficients_.s = numerics.solid_s;
 }
 
 void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
@@ -76,8 +81,8 @@ void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& 
   // CIP pressure stabilization: linear in p and fixed during the step.
   cip_ = pattern_;
   const double mu = coefficients_.rho_f * coefficients_.nu_f;
-  const double gamma = scenario_.numerics.cip_gamma / mu;
-  const double transient = scenario_.numerics.cip_transient_weight * coefficients_.rho_f / (time_step_s * mu);
+  const double gamma = numerics_.cip_gamma / mu;
+  const double transient = numerics_.cip_transient_weight * coefficients_.rho_f / (time_step_s * mu);
   forms::add_pressure_stabilization(mesh_, cut, fe::build_stabilization_edges(cut), gamma,
                                     kFieldsPerNode, kP, cip_, transient);
   build_open_sides();

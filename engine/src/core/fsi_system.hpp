@@ -32,6 +32,9 @@ class FsiSystem {
   /// Old values at T_m, one per quadrature point of the current geometry.
   void set_old_values(std::vector<forms::OldValues> old) { old_ = std::move(old); }
   void set_time_step(double k_s) { coefficients_.k_s = k_s; }
+  /// New numerical parameters between steps (Engine::set_numerics): the solid velocity
+  /// stabilization (alpha, s) at once, the CIP weights from the next set_geometry on.
+  void set_numerics(const NumericsSpec& numerics);
 
   /// R(x). Dirichlet rows read x - g.
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const;
@@ -51,6 +54,7 @@ class FsiSystem {
   void build_contact_forces();
 
   const Scenario& scenario_;
+  NumericsSpec numerics_;  ///< the scenario's, or what set_numerics was last given
   const mesh::PatchMesh& mesh_;
   forms::FsiCoefficients coefficients_;
   solve::SparseMatrix pattern_;

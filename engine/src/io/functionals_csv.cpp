@@ -38,6 +38,12 @@ FunctionalsCsv::FunctionalsCsv(const std::filesystem::path& file, bool with_newt
   write_line(functionals_csv_header(with_newton_));
 }
 
+FunctionalsCsv::FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns,
+                               const std::vector<std::string>& first_rows)
+    : FunctionalsCsv(file, with_newton_columns) {
+  for (const std::string& row : first_rows) write_line(row);
+}
+
 void FunctionalsCsv::append(const State& state) {
   if (with_newton_) {
     throw std::logic_error("FunctionalsCsv: this file has newton columns; pass the StepReport");
