@@ -28,7 +28,7 @@ study_apps_or_die() {
 study_run_one() {
   local end_time=$1 name=$2 scenario=$3; shift 3
   local dir="$study_out/$name"
-  if [ -f "$dir/summary.json" ] && ! grep -q '"interrupted": *true' "$dir/summary.json"; then
+  if study_run_finished "$dir"; then
     echo "reusing $dir"; return 0
   fi
   mkdir -p "$dir"
@@ -52,7 +52,7 @@ study_run_one() {
 # (--summary-only) none: the summary then covers the runs that exist.
 study_run_all() {
   local jobs=$1 end_time=$2
-  export -f study_run_one; export study_out FSI_MOVIE
+  export -f study_run_one study_run_finished; export study_out FSI_MOVIE
   if [ "${study_summary_only:-0}" = 1 ]; then cat > /dev/null; return 0; fi
   # Each line becomes the arguments of one study_run_one call (words split by the shell).
   awk -v only="${study_only:-}" 'BEGIN { n = split(only, o, ","); for (i = 1; i <= n; ++i) keep[o[i]] = 1 }
