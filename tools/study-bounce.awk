@@ -7,9 +7,11 @@
 # until the ball has come back down half way towards that minimum (the same rule as
 # tools/example1-table.awk). rest_distance is the distance in the last row. A value is
 # empty when the run did not get that far (e.g. the ball stuck in real contact). Rows with
-# a relative mass error above 0.5 (the step at which fsi-movie stops a degenerated body)
-# are not a ball any more and are skipped.
-BEGIN { FS = ","; n = 0; state = "approach"; dmin = 1e300; dmax = -1 }
+# a relative mass error above max_mass_error (default 0.5: the step at which fsi-movie
+# stops a degenerated body) are not a ball any more and are skipped.
+BEGIN {
+  if (max_mass_error == "") max_mass_error = 0.5  # -v max_mass_error=... (study-common.sh)
+  FS = ","; n = 0; state = "approach"; dmin = 1e300; dmax = -1 }
 NR == 1 {
   for (i = 1; i <= NF; ++i) col[$i] = i
   if (!("min_distance_m" in col)) {
@@ -17,7 +19,7 @@ NR == 1 {
   }
   next
 }
-("mass_error" in col) && $col["mass_error"] + 0 > 0.5 { next }
+("mass_error" in col) && $col["mass_error"] + 0 > max_mass_error { next }
 {
   d = $col["min_distance_m"] + 0; last = $col["min_distance_m"]
   if (state == "approach") {

@@ -11,6 +11,11 @@
 # ($study_out/NAME/checkpoints/) let a run be inspected, and a run that stopped before its
 # end goes on from the latest one when the study is started again (fsi-movie --continue).
 
+# fsi-movie stops a run whose body degenerated (relative mass error above this; the
+# kLostBodyMassError of apps/common/movie_run.cpp). That last row is not physics: the
+# reductions and plots leave rows above it out.
+study_degenerate_mass_error=0.5
+
 study_apps_or_die() {
   [ -n "${FSI_STUDY_NO_BUILD:-}" ] || tools/build >/dev/null
   local app
