@@ -48,7 +48,12 @@ study_run_one() {
        --checkpoint-every 250 --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
     echo "finished $dir in $((SECONDS - start)) s"
   else
-    echo "FAILED $dir (exit $?, see $dir/log.txt)" >&2
+    local rc=$?
+    if [ "$rc" = 130 ]; then
+      echo "stopped $dir (interrupted): start the study again to continue it from its latest checkpoint" >&2
+    else
+      echo "FAILED $dir (exit $rc, see $dir/log.txt)" >&2
+    fi
   fi
 }
 
