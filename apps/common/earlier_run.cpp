@@ -3,7 +3,7 @@
 
 #include <fstream>
 #include <regex>
-#include <sstream>
+#include <stdexcept>
 
 #include <fsi/error.hpp>
 #include <fsi/output.hpp>
@@ -36,40 +36,6 @@ fs::path latest_checkpoint(const fs::path& out_dir, long& step) {
   return best;
 }
 
-EarlierRun::Row parse_row(const std::string& line, const fs::path& file, std::size_t line_no) {
-  std::vector<double> v;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) {
-    try {
-      v.push_back(std::stod(cell));
-    } catch (const std::exception&) {
-      throw InputError(file.string(), "line " + std::to_string(line_no), "not a number: '" + cell + "'");
-    }
-  }
-  if (v.size() != 15) {
-    throw InputError(file.string(), "line " + std::to_string(line_no),
-                     "expected 15 columns, got " + std::to_string(v.size()));
-  }
-  EarlierRun::Row r{};
-  r.step = static_cast<long>(v[0]);
-  r.time_s = v[1];
-  Functionals& f = r.functionals;
-  f.min_distance_m = v[2];
-  f.bottom_y_m = v[3];
-  f.top_y_m = v[4];
-  f.left_x_m = v[5];
-  f.right_x_m = v[6];
-  f.centroid_x_m = v[7];
-  f.centroid_y_m = v[8];
-  f.mean_vx_mps = v[9];
-  f.mean_vy_mps = v[10];
-  f.solid_area_m2 = v[11];
-  f.mass_error = v[12];
-  r.converged = v[14] != 0.0;
-  return r;
-}
-
 }  // namespace
 
 EarlierRun read_earlier_run(const fs::path& out_dir) {
@@ -85,7 +51,12 @@ EarlierRun read_earlier_run(const fs::path& out_dir) {
   bool found = false;
   for (std::size_t line_no = 2; std::getline(in, line); ++line_no) {
     if (line.empty()) continue;
-    const EarlierRun::Row r = parse_row(line, csv, line_no);
+    EarlierRun::Row r;
+    try {
+      r = io::parse_functionals_csv_row(line);
+    } catch (const std::invalid_argument& why) {
+      throw InputError(csv.string(), "line " + std::to_string(line_no), why.what());
+    }
     if (r.step > e.step) break;
     e.csv_rows.push_back(line);
     e.rows.push_back(r);

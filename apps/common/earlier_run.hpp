@@ -6,6 +6,7 @@
 /// the earlier summary.json (touch-downs and first events before the checkpoint).
 /// Long studies (the stairs take hours per run) survive a stopped machine this way.
 #include <filesystem>
+#include <fsi/output.hpp>
 #include <fsi/state.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -18,12 +19,7 @@ struct EarlierRun {
   long step = 0;                     ///< n
   double time_s = 0.0;               ///< time of the row of step n
   std::vector<std::string> csv_rows;  ///< functionals.csv rows of steps 1..n, as written
-  struct Row {
-    long step;
-    double time_s;
-    Functionals functionals;
-    bool converged;
-  };
+  using Row = io::FunctionalsCsvRow;
   std::vector<Row> rows;          ///< the same rows, parsed
   nlohmann::json summary;         ///< summary.json (null if there is none)
 };

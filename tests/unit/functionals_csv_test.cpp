@@ -43,6 +43,25 @@ fsi::State sample_state() {
   return s;
 }
 
+TEST(FunctionalsCsv, RowsReadBackExactly) {
+  const fsi::State s = sample_state();
+  fsi::StepReport report;
+  report.newton_iterations = 7;
+  report.converged = false;
+  const fsi::io::FunctionalsCsvRow r =
+      fsi::io::parse_functionals_csv_row(fsi::io::functionals_csv_row(s.step, s.time_s, s.functionals, report));
+  EXPECT_EQ(r.step, 42);
+  EXPECT_EQ(r.time_s, 0.084);
+  EXPECT_EQ(r.functionals.min_distance_m, 1.0 / 3.0);
+  EXPECT_EQ(r.functionals.mean_vx_mps, s.functionals.mean_vx_mps);
+  EXPECT_EQ(r.functionals.mean_vy_mps, s.functionals.mean_vy_mps);
+  EXPECT_EQ(r.functionals.mass_error, 2e-7);
+  EXPECT_EQ(r.newton_iterations, 7);
+  EXPECT_FALSE(r.converged);
+  EXPECT_THROW(fsi::io::parse_functionals_csv_row("1,2,x"), std::invalid_argument);
+  EXPECT_THROW(fsi::io::parse_functionals_csv_row("1,2,3"), std::invalid_argument);
+}
+
 TEST(FunctionalsCsv, HeaderNamesEveryColumn) {
   EXPECT_EQ(fsi::io::functionals_csv_header(false),
             "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"

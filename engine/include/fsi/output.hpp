@@ -93,6 +93,17 @@ std::string functionals_csv_header(bool with_newton_columns);
 
 /// One data line (without newline). Without a report, only the functional columns.
 std::string functionals_csv_row(long step, double time_s, const Functionals& functionals);
+
+/// One row of a functionals CSV with the newton columns, read back (e.g. to continue a
+/// run). Throws std::invalid_argument on a cell that is not a number or a wrong count.
+struct FunctionalsCsvRow {
+  long step = 0;
+  double time_s = 0.0;
+  Functionals functionals;
+  int newton_iterations = 0;
+  bool converged = false;
+};
+FunctionalsCsvRow parse_functionals_csv_row(const std::string& line);
 std::string functionals_csv_row(long step, double time_s, const Functionals& functionals,
                                 const StepReport& report);
 

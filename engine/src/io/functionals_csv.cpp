@@ -1,7 +1,9 @@
 // Functionals as CSV. The column order is the header's; keep both in one place (here).
 #include "fsi/output.hpp"
 
+#include <iterator>
 #include <stdexcept>
+#include <vector>
 
 #include "fsi/error.hpp"
 #include "io/number_text.hpp"
@@ -16,14 +18,52 @@ std::string functionals_csv_header(bool with_newton_columns) {
   return h;
 }
 
+namespace {
+
+/// The functionals in the header's order (after step and time_s).
+constexpr double Functionals::*kColumns[] = {
+    &Functionals::min_distance_m, &Functionals::bottom_y_m,   &Functionals::top_y_m,
+    &Functionals::left_x_m,       &Functionals::right_x_m,    &Functionals::centroid_x_m,
+    &Functionals::centroid_y_m,   &Functionals::mean_vx_mps,  &Functionals::mean_vy_mps,
+    &Functionals::solid_area_m2,  &Functionals::mass_error};
+
+}  // namespace
+
 std::string functionals_csv_row(long step, double time_s, const Functionals& f) {
   std::string row = std::to_string(step);
-  for (double v :
-       {time_s, f.min_distance_m, f.bottom_y_m, f.top_y_m, f.left_x_m, f.right_x_m, f.centroid_x_m,
-        f.centroid_y_m, f.mean_vx_mps, f.mean_vy_mps, f.solid_area_m2, f.mass_error}) {
-    row.append(",").append(number_text(v));
-  }
+  row.append(",").append(number_text(time_s));
+  for (double Functionals::*column : kColumns) row.append(",").append(number_text(f.*column));
   return row;
+}
+
+FunctionalsCsvRow parse_functionals_csv_row(const std::string& line) {
+  std::vector<double> v;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t end = line.find(',', begin);
+    const std::string cell = line.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    std::size_t used = 0;
+    try {
+      v.push_back(std::stod(cell, &used));
+    } catch (const std::exception&) {
+      used = std::string::npos;
+    }
+    if (used != cell.size()) throw std::invalid_argument("not a number: '" + cell + "'");
+    if (end == std::string::npos) break;
+    begin = end + 1;
+  }
+  constexpr std::size_t kWithNewton = 2 + std::size(kColumns) + 2;
+  if (v.size() != kWithNewton) {
+    throw std::invalid_argument("expected " + std::to_string(kWithNewton) + " columns, got " +
+                                std::to_string(v.size()));
+  }
+  FunctionalsCsvRow r;
+  r.step = static_cast<long>(v[0]);
+  r.time_s = v[1];
+  for (std::size_t i = 0; i < std::size(kColumns); ++i) r.functionals.*kColumns[i] = v[2 + i];
+  r.newton_iterations = static_cast<int>(v[kWithNewton - 2]);
+  r.converged = v[kWithNewton - 1] != 0.0;
+  return r;
 }
 
 std::string functionals_csv_row(long step, double time_s, const Functionals& f,
