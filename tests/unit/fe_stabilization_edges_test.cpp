@@ -2,7 +2,7 @@
 // normal cell sizes h_n (|K|/|e| for sub-quads, 2|K|/|e| for triangles), E_h^i vs E_h^0
 // classification, both sides' quadrature points coincide; S_aniso is symmetric,
 // positive semi-definite, vanishes for linear pressures away from cut patches and
-// ignores solid cells.
+// ignores solid cells; the wall-film factor scales only thin fluid cells at a wall.
 #include "fe/stabilization_edges.hpp"
 
 #include <gtest/gtest.h>
@@ -60,11 +60,41 @@ TEST(FeStabilizationEdges, NormalSizesAndClassificationOnAnAnisotropicMesh) {
 }
 
 /// Dense copy of the p-p block of S_aniso on a scalar (stride 1) system.
-Eigen::MatrixXd stabilization_matrix(const fsi::mesh::PatchMesh& mesh, const fsi::fe::CutMesh& cut) {
+Eigen::MatrixXd stabilization_matrix(const fsi::mesh::PatchMesh& mesh, const fsi::fe::CutMesh& cut,
+                                     double wall_film_factor = 0.0) {
   auto a = fsi::solve::build_pattern(mesh, 1, {{1}}, {{1}});
   const auto edges = fsi::fe::build_stabilization_edges(cut);
-  fsi::forms::add_pressure_stabilization(mesh, cut, edges, 0.1, 1, 0, a);
+  fsi::forms::add_pressure_stabilization(mesh, cut, edges, 0.1, 1, 0, a, 0.0, wall_film_factor);
   return Eigen::MatrixXd(a);
+}
+
+TEST(FePressureStabilization, WallFilmFactorScalesOnlyThinFluidCellsAtAWall) {
+  // Patches 0.25 x 0.1 on (0,1) x (0,0.4); the body fills everything above y = 0.005, so
+  // the fluid is a film of 5 mm in the bottom patch row (the ground, when it is a wall).
+  fsi::BlockSpec b;
+  b.x = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
+  b.y = {fsi::AxisPiece{0.0, 0.4, 4, 0.0, 0.0}};
+  fsi::MeshSpec spec;
+  spec.blocks = {b};
+  const double film_m = 0.005;
+  auto phi = [film_m](const Vec2& x) { return film_m - x.y(); };
+  const auto ground = fsi::mesh::build_patch_mesh(spec, {fsi::Segment2{{0.0, 0.0}, {1.0, 0.0}}});
+  const auto cut = fsi::fe::build_cut_mesh(ground, phi);
+  const Eigen::MatrixXd s0 = stabilization_matrix(ground, cut);
+  const Eigen::MatrixXd s1 = stabilization_matrix(ground, cut, 1.0);
+  ASSERT_GT(s0.norm(), 0.0);
+  // h = h_K (about the film height) instead of h_P = 0.25: (0.005 / 0.25)^2 = 4e-4.
+  EXPECT_GT(s1.norm(), 1e-4 * s0.norm());
+  EXPECT_LT(s1.norm(), 1e-3 * s0.norm());
+  EXPECT_LT((s1 - s1.transpose()).norm(), 1e-14 * s1.norm());
+  EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s1).eigenvalues().minCoeff(), -1e-12 * s1.norm());
+  // kappa h_K above h_P: h_P as without the factor.
+  EXPECT_LT((stabilization_matrix(ground, cut, 1e3) - s0).norm(), 1e-14 * s0.norm());
+  // The same film without a wall under it (an open boundary) is left alone.
+  const auto open = fsi::mesh::build_patch_mesh(spec, {});
+  const auto open_cut = fsi::fe::build_cut_mesh(open, phi);
+  EXPECT_LT((stabilization_matrix(open, open_cut, 1.0) - stabilization_matrix(open, open_cut)).norm(),
+            1e-14 * s0.norm());
 }
 
 TEST(FePressureStabilization, SymmetricSemiDefiniteAndZeroForLinearsOnUncutMeshes) {

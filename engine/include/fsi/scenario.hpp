@@ -85,6 +85,12 @@ struct NumericsSpec {
   /// Weight w of the transient term in the CIP scaling gamma h^2 / (rho_f nu_f + w rho_f h^2 / k)
   /// (ours): 1 scales like PSPG's tau ~ k / rho, 0 is the chapter's Stokes scaling.
   double cip_transient_weight = 1.0;
+  /// Film factor kappa (ours; 0 = off, the chapter): a fluid sub-element of a cut patch
+  /// with a node on a no-slip wall uses h = min(h_P, kappa h_K) instead of h_P in the CIP
+  /// scaling, h_K its smallest height. In a thin wall film the h_P-scaled term lets the
+  /// fluid leak along the film faster than lubrication flow (h_K^3 / (12 mu) grad p)
+  /// could drain it; with kappa ~ 1 the leak scales like h_K^3 too.
+  double cip_wall_film_factor = 0.0;
   double solid_alpha = 0.1;       ///< alpha of the solid velocity stabilization (12.7)
   double solid_s = 2.0;           ///< exponent s in alpha h^s
   double blend_eps_patches = 1.5; ///< eps of the T_m blend g, in patch sizes

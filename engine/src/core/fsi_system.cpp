@@ -84,7 +84,8 @@ void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& 
   const double gamma = numerics_.cip_gamma / mu;
   const double transient = numerics_.cip_transient_weight * coefficients_.rho_f / (time_step_s * mu);
   forms::add_pressure_stabilization(mesh_, cut, fe::build_stabilization_edges(cut), gamma,
-                                    kFieldsPerNode, kP, cip_, transient);
+                                    kFieldsPerNode, kP, cip_, transient,
+                                    numerics_.cip_wall_film_factor);
   build_open_sides();
   build_contact_forces();
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace fsi::forms {
 namespace {
@@ -11,19 +12,34 @@ void add(solve::SparseMatrix& a, int row, int col, double v) {
   if (k >= 0) a.valuePtr()[k] += v;
 }
 
+/// Smallest height of a sub-element [m]: 2|K| / longest side (triangle), |K| / longest side (quad).
+double smallest_height(const fe::CutMesh& cut, const fe::SubElement& e) {
+  double longest = 0.0;
+  for (int i = 0; i < e.vertices; ++i)
+    longest = std::max(longest, (cut.x[e.node[(i + 1) % e.vertices]] - cut.x[e.node[i]]).norm());
+  return (e.vertices == 3 ? 2.0 : 1.0) * std::abs(fe::element_area(cut, e)) / longest;
+}
+
+bool touches_wall(const mesh::PatchMesh& mesh, const fe::SubElement& e) {
+  for (int i = 0; i < e.vertices; ++i)
+    if (mesh.on_wall[e.node[i]]) return true;
+  return false;
+}
+
 }  // namespace
 
 void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& cut,
                                 const std::vector<fe::StabilizationEdge>& edges, double gamma,
                                 int stride, int field, solve::SparseMatrix& a,
-                                double transient_scale) {
+                                double transient_scale, double wall_film_factor) {
+  auto scaling = [transient_scale](double h) { return h * h / (1.0 + transient_scale * h * h); };
   for (const fe::StabilizationEdge& se : edges) {
     const fe::SubElement& e1 = cut.elements[se.element1];
     const fe::SubElement& e2 = cut.elements[se.element2];
     const bool fluid1 = e1.phase == Phase::fluid, fluid2 = e2.phase == Phase::fluid;
     if (!fluid1 && !fluid2) continue;
     const double hp = std::max(mesh.patches[e1.patch].size_m, mesh.patches[e2.patch].size_m);
-    const double scale = gamma * hp * hp / (1.0 + transient_scale * hp * hp);
+    const double scale = gamma * scaling(hp);
     for (int q = 0; q < 2; ++q) {
       const double w = scale * se.weight[q];
       if (se.in_cut_patch) {
@@ -32,7 +48,11 @@ void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& 
           const fe::SubElement& e = s == 0 ? e1 : e2;
           if (e.phase != Phase::fluid) continue;
           const fe::ShapeValues& sv = s == 0 ? se.side1[q] : se.side2[q];
-          const double f = 0.5 * w * (s == 0 ? se.hn1_m : se.hn2_m);
+          double f = 0.5 * w * (s == 0 ? se.hn1_m : se.hn2_m);
+          if (wall_film_factor > 0.0 && touches_wall(mesh, e)) {
+            const double h = std::min(hp, wall_film_factor * smallest_height(cut, e));
+            f *= scaling(h) / scaling(hp);
+          }
           for (int i = 0; i < e.vertices; ++i)
             for (int j = 0; j < e.vertices; ++j)
               add(a, stride * e.node[i] + field, stride * e.node[j] + field,

@@ -28,9 +28,17 @@ namespace fsi::forms {
 /// (rho_f h_P^2 / k >> rho_f nu_f: by a factor ~300 at the ground in Example 1).
 /// Without it the stabilization lets the fluid leak out of a thin gap through the
 /// pressure diffusion, and the squeeze-film pressure that stops the ball never builds.
+///
+/// With `wall_film_factor` = kappa > 0, a fluid sub-element K of a cut patch with a node
+/// on a no-slip wall uses h = min(h_P, kappa h_K) for its side of an E_h^i edge, h_K the
+/// smallest height of K (2|K| / longest side for triangles). Why: in a film of height
+/// h_K under a body, the h_P-scaled term lets fluid through like a Darcy flux
+/// gamma h_P^2 / (1 + ...) h_K grad p, while lubrication flow carries only
+/// h_K^3 / (12 mu) grad p, so the film drains too fast once h_K is below about 1 mm
+/// (Example 1). With h = h_K the leak scales like h_K^3, as lubrication does.
 void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& cut,
                                 const std::vector<fe::StabilizationEdge>& edges, double gamma,
                                 int stride, int field, solve::SparseMatrix& a,
-                                double transient_scale = 0.0);
+                                double transient_scale = 0.0, double wall_film_factor = 0.0);
 
 }  // namespace fsi::forms

@@ -90,6 +90,10 @@ std::string fingerprint(const Scenario& scenario) {
   writer.object.erase("name");
   writer.object.erase("output");
   writer.object["numerics"].erase("end_time_s");
+  // Numerics added after checkpoint version 3 count only when set: at their default every
+  // step is the same as before they existed, so older checkpoints stay loadable.
+  if (scenario.numerics.cip_wall_film_factor == 0.0)
+    writer.object["numerics"].erase("cip_wall_film_factor");
   const std::string canonical =
       writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   char hex[17];

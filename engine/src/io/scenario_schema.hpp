@@ -141,6 +141,7 @@ void visit_fields(V& v, S& n) {
   v("max_halvings", n.max_halvings, Int{0, 20});
   v("cip_gamma", n.cip_gamma, Real{0.0, 1.0e3});
   v("cip_transient_weight", n.cip_transient_weight, Real{0.0, 1.0e3});
+  v("cip_wall_film_factor", n.cip_wall_film_factor, Real{0.0, 1.0e3});
   v("solid_alpha", n.solid_alpha, Real{0.0, 1.0e3});
   v("solid_s", n.solid_s, Real{0.0, 4.0});
   v("blend_eps_patches", n.blend_eps_patches, Real{0.0, 100.0, true, false, "patches"});
