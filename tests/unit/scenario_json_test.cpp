@@ -75,7 +75,7 @@ TEST(ScenarioJson, WritesEveryField) {
   for (const char* key :
        {"\"name\"", "\"blocks\"", "\"from_m\"", "\"corners\"", "\"refinements\"", "\"walls\"",
         "\"initial_velocity_mps\"", "\"viscosity_m2ps\"", "\"lambda_pa\"", "\"gravity_mps2\"",
-        "\"failure_policy\"", "\"identity_gap_m\"", "\"cip_wall_film_factor\"", "\"dist0_m\"", "\"range_max\"",
+        "\"failure_policy\"", "\"identity_gap_m\"", "\"cip_wall_film_factor\"", "\"cut_snap\"", "\"dist0_m\"", "\"range_max\"",
         "\"mesh_overlay\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key;
   }
@@ -114,6 +114,9 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   fsi::Scenario h = a;  // added later: counts only when set (pinned value below unchanged)
   h.numerics.cip_wall_film_factor = 1.0;
   EXPECT_NE(fsi::fingerprint(h), f);
+  fsi::Scenario i = a;  // the same
+  i.numerics.cut_snap = 3e-2;
+  EXPECT_NE(fsi::fingerprint(i), f);
 }
 
 TEST(ScenarioJson, FingerprintIsPinned) {

@@ -95,6 +95,11 @@ struct NumericsSpec {
   double solid_s = 2.0;           ///< exponent s in alpha h^s
   double blend_eps_patches = 1.5; ///< eps of the T_m blend g, in patch sizes
   double blend_delta_patches = 3.0;  ///< delta of the T_m blend g, in patch sizes
+  /// A cut closer than cut_snap x (patch side) to a patch corner goes through the corner
+  /// (ours). A cut just beside a corner leaves a sub-element a fraction of a millimetre
+  /// wide whose nodal values are nearly free, and Newton stalls on it (the stairs' thin
+  /// rows; docs/solver.md). Snapping moves the interface by at most cut_snap x side.
+  double cut_snap = 1.0e-6;
   /// T_m = id where the body is closer than this to a wall (the chapter's contact gap).
   double identity_gap_m = 0.0;    ///< 0: one patch height at the wall
 };

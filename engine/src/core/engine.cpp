@@ -52,11 +52,13 @@ struct Engine::Impl {
   fe::CutData data_next;
   fe::QuadratureTable quad_cur;
 
+  fe::CutOptions cut_options() const { return fe::CutOptions{numerics.cut_snap}; }
+
   void initialize() {
     const int n = mesh.num_nodes();
     const fe::CutData data0 = fe::cut_data(mesh, [this](const mesh::Vec2& x) {
       return interface::initial_distance(scenario.body, x);
-    });
+    }, cut_options());
     cut_cur = fe::build_cut_mesh(mesh, data0);
     cut_prev = cut_cur;
     state = State{};
@@ -93,7 +95,7 @@ struct Engine::Impl {
     const fe::CutMesh cur = fe::build_cut_mesh(mesh, fe::CutData{s0.corner_sign, s0.edge_cut});
     const fe::CutMesh prev = fe::build_cut_mesh(mesh, fe::CutData{s0.previous_corner_sign, s0.previous_edge_cut});
     const fe::CutMesh next = fe::build_cut_mesh(
-        mesh, fe::cut_data(mesh, interface::ips_level_set(scenario.body, cur, buckets, s0.solution)));
+        mesh, fe::cut_data(mesh, interface::ips_level_set(scenario.body, cur, buckets, s0.solution), cut_options()));
     const fe::QuadratureTable quad = fe::build_quadrature(next);
     system.set_geometry(next, quad, origin->time_step_s);
     std::vector<forms::OldValues> old;
@@ -132,7 +134,7 @@ struct Engine::Impl {
 
   void after_state_change() {
     quad_cur = fe::build_quadrature(cut_cur);
-    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution));
+    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution), cut_options());
     cut_next = fe::build_cut_mesh(mesh, data_next);
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
   }
@@ -196,7 +198,7 @@ struct Engine::Impl {
     cut_cur = std::move(cut_next);
     quad_cur = std::move(quad_next);  // the step's quadrature becomes the current one: no copy
     const auto t0 = std::chrono::steady_clock::now();
-    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution));
+    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution), cut_options());
     cut_next = fe::build_cut_mesh(mesh, data_next);
     report.geometry_seconds += seconds_since(t0);
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);

@@ -94,6 +94,7 @@ std::string fingerprint(const Scenario& scenario) {
   // step is the same as before they existed, so older checkpoints stay loadable.
   if (scenario.numerics.cip_wall_film_factor == 0.0)
     writer.object["numerics"].erase("cip_wall_film_factor");
+  if (scenario.numerics.cut_snap == 1.0e-6) writer.object["numerics"].erase("cut_snap");
   const std::string canonical =
       writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   char hex[17];

@@ -146,6 +146,7 @@ void visit_fields(V& v, S& n) {
   v("solid_s", n.solid_s, Real{0.0, 4.0});
   v("blend_eps_patches", n.blend_eps_patches, Real{0.0, 100.0, true, false, "patches"});
   v("blend_delta_patches", n.blend_delta_patches, Real{0.0, 100.0, true, false, "patches"});
+  v("cut_snap", n.cut_snap, Real{0.0, 0.25});
   v("identity_gap_m", n.identity_gap_m, Real{0.0, 1.0e3, false, false, "m (0: one patch)"});
 }
 
