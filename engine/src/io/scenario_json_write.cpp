@@ -92,9 +92,10 @@ std::string fingerprint(const Scenario& scenario) {
   writer.object["numerics"].erase("end_time_s");
   // Numerics added after checkpoint version 3 count only when set: at their default every
   // step is the same as before they existed, so older checkpoints stay loadable.
-  if (scenario.numerics.cip_wall_film_factor == 0.0)
+  const NumericsSpec defaults;
+  if (scenario.numerics.cip_wall_film_factor == defaults.cip_wall_film_factor)
     writer.object["numerics"].erase("cip_wall_film_factor");
-  if (scenario.numerics.cut_snap == 1.0e-6) writer.object["numerics"].erase("cut_snap");
+  if (scenario.numerics.cut_snap == defaults.cut_snap) writer.object["numerics"].erase("cut_snap");
   const std::string canonical =
       writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   char hex[17];
