@@ -40,6 +40,14 @@ void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& 
     if (!fluid1 && !fluid2) continue;
     const double hp = std::max(mesh.patches[e1.patch].size_m, mesh.patches[e2.patch].size_m);
     const double scale = gamma * scaling(hp);
+    // Wall films: each side's factor scaling(h) / scaling(h_P), once per edge.
+    std::array<double, 2> film{1.0, 1.0};
+    if (se.in_cut_patch && wall_film_factor > 0.0)
+      for (int s = 0; s < 2; ++s) {
+        const fe::SubElement& e = s == 0 ? e1 : e2;
+        if (e.phase != Phase::fluid || !touches_wall(mesh, e)) continue;
+        film[s] = scaling(std::min(hp, wall_film_factor * smallest_height(cut, e))) / scaling(hp);
+      }
     for (int q = 0; q < 2; ++q) {
       const double w = scale * se.weight[q];
       if (se.in_cut_patch) {
@@ -48,11 +56,7 @@ void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& 
           const fe::SubElement& e = s == 0 ? e1 : e2;
           if (e.phase != Phase::fluid) continue;
           const fe::ShapeValues& sv = s == 0 ? se.side1[q] : se.side2[q];
-          double f = 0.5 * w * (s == 0 ? se.hn1_m : se.hn2_m);
-          if (wall_film_factor > 0.0 && touches_wall(mesh, e)) {
-            const double h = std::min(hp, wall_film_factor * smallest_height(cut, e));
-            f *= scaling(h) / scaling(hp);
-          }
+          const double f = 0.5 * w * film[s] * (s == 0 ? se.hn1_m : se.hn2_m);
           for (int i = 0; i < e.vertices; ++i)
             for (int j = 0; j < e.vertices; ++j)
               add(a, stride * e.node[i] + field, stride * e.node[j] + field,
