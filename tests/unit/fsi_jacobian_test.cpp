@@ -56,11 +56,16 @@ struct ElementFixture {
   fsi::fe::SubElement element;
 };
 
-void check_element(int vertices, fsi::Phase phase) {
-  ElementFixture f(vertices, phase);
+fsi::forms::FsiCoefficients test_coefficients() {
   fsi::forms::FsiCoefficients c;
   c.mu_s = 2e3;  // soft enough that the nonlinearity shows at these displacements
   c.lambda_s = 8e3;
+  return c;
+}
+
+void check_element(int vertices, fsi::Phase phase,
+                   const fsi::forms::FsiCoefficients& c = test_coefficients()) {
+  ElementFixture f(vertices, phase);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> d(-0.05, 0.05);
   const int nl = 5 * vertices;
@@ -87,6 +92,52 @@ TEST(FsiJacobian, FluidTriangle) { check_element(3, fsi::Phase::fluid); }
 TEST(FsiJacobian, FluidQuadWithOpenBoundary) { check_element(4, fsi::Phase::fluid); }
 TEST(FsiJacobian, SolidTriangle) { check_element(3, fsi::Phase::solid); }
 TEST(FsiJacobian, SolidQuad) { check_element(4, fsi::Phase::solid); }
+
+// The nodal pressures lie in [-5, 5] Pa: with p_cav = -1 Pa and a rounding width of
+// 1 Pa the quadrature points fall on all three branches of the ramp.
+TEST(FsiJacobian, FluidQuadAcrossTheCavitationFloor) {
+  fsi::forms::FsiCoefficients c = test_coefficients();
+  c.cavitation_p_pa = -1.0;
+  c.cavitation_smoothing_pa = 1.0;
+  check_element(4, fsi::Phase::fluid, c);
+}
+
+// A fluid element at rest with a uniform nodal pressure p: the pressure rows hold
+// -ramp(p_cav - p) / (rho_f nu_f) (xi, 1). Above the floor plus the rounding they are
+// zero, far below it the fluid expands at (p_cav - p) / (rho_f nu_f).
+TEST(FsiCavitation, TheFluidExpandsOnlyBelowTheFloor) {
+  ElementFixture f(4, fsi::Phase::fluid);
+  f.input.num_open_sides = 0;
+  fsi::forms::FsiCoefficients c = test_coefficients();
+  c.cavitation_p_pa = -1.0e4;
+  c.cavitation_smoothing_pa = 2.5e3;
+  const double mu = c.rho_f * c.nu_f;
+  auto pressure_rows = [&](double p) {
+    std::array<double, kMaxLocal> x{}, r{};
+    for (int a = 0; a < 4; ++a) x[5 * a + 4] = p;
+    fsi::forms::element_residual<double>(f.input, c, x, r);
+    return std::array<double, 4>{r[4], r[9], r[14], r[19]};
+  };
+  double area = 0.0;
+  for (const auto& q : f.qp) area += q.weight;
+  double sum_above = 0.0, sum_below = 0.0;
+  for (double r : pressure_rows(-8.0e3)) sum_above += r;  // floor + w/2 = -8.75e3 < p
+  for (double r : pressure_rows(-3.0e4)) sum_below += r;
+  EXPECT_EQ(sum_above, 0.0);
+  // sum over the nodes of (xi_a, 1) is the element area (partition of unity).
+  EXPECT_NEAR(sum_below, -(2.0e4 / mu) * area, 1e-9 * (2.0e4 / mu) * area);
+}
+
+TEST(FsiCavitation, RoundedRampIsContinuousWithItsDerivative) {
+  const double w = 2.0;
+  EXPECT_EQ(fsi::forms::rounded_ramp(-1.0, w), 0.0);
+  EXPECT_DOUBLE_EQ(fsi::forms::rounded_ramp(0.0, w), 0.25);  // w/8: above max(0, x)
+  EXPECT_DOUBLE_EQ(fsi::forms::rounded_ramp(1.0, w), 1.0);
+  const Jet left = fsi::forms::rounded_ramp(Jet::variable(-1.0 + 1e-12, 0), w);
+  const Jet right = fsi::forms::rounded_ramp(Jet::variable(1.0 - 1e-12, 0), w);
+  EXPECT_NEAR(left.d[0], 0.0, 1e-9);
+  EXPECT_NEAR(right.d[0], 1.0, 1e-9);
+}
 
 TEST(FsiJacobian, AssembledSystemMatchesFiniteDifferences) {
   fsi::Scenario s = fsi::testing::coarse_example1();

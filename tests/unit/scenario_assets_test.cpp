@@ -40,6 +40,7 @@ TEST(ScenarioAssets, EveryFileLoadsAndIsNamedUniquely) {
     }
     EXPECT_EQ(s.source, entry.path());
     EXPECT_TRUE(names.emplace(s.name, entry.path()).second) << "name used twice: " << s.name;
+    EXPECT_EQ(s.numerics.cavitation_pressure_pa, -1.0e4) << entry.path() << ": every shipped scenario uses the floor";
     ++count;
   }
   EXPECT_GE(count, 16);
@@ -50,7 +51,11 @@ TEST(ScenarioAssets, BallDropIsExample1) {
   EXPECT_EQ(nodes(s), 4225);
   EXPECT_EQ(s.numerics.time_step_s, 2e-3);
   EXPECT_EQ(s.numerics.end_time_s, 5.0);
-  EXPECT_EQ(fsi::fingerprint(s), fsi::fingerprint(fsi::example1_scenario()));
+  // The chapter's Example 1 plus our cavitation floor (docs/solver.md, "The lift-off").
+  fsi::Scenario chapter = fsi::example1_scenario();
+  EXPECT_EQ(chapter.numerics.cavitation_pressure_pa, 0.0);  // off by default: the chapter
+  chapter.numerics.cavitation_pressure_pa = -1.0e4;
+  EXPECT_EQ(fsi::fingerprint(s), fsi::fingerprint(chapter));
 }
 
 TEST(ScenarioAssets, DemoAndFineMesh) {

@@ -75,8 +75,8 @@ TEST(ScenarioJson, WritesEveryField) {
   for (const char* key :
        {"\"name\"", "\"blocks\"", "\"from_m\"", "\"corners\"", "\"refinements\"", "\"walls\"",
         "\"initial_velocity_mps\"", "\"viscosity_m2ps\"", "\"lambda_pa\"", "\"gravity_mps2\"",
-        "\"failure_policy\"", "\"identity_gap_m\"", "\"cip_wall_film_factor\"", "\"cut_snap\"", "\"dist0_m\"", "\"range_max\"",
-        "\"mesh_overlay\""}) {
+        "\"failure_policy\"", "\"identity_gap_m\"", "\"cip_wall_film_factor\"", "\"cut_snap\"",
+        "\"cavitation_pressure_pa\"", "\"dist0_m\"", "\"range_max\"", "\"mesh_overlay\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key;
   }
 }
@@ -117,6 +117,9 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   fsi::Scenario i = a;  // the same
   i.numerics.cut_snap = 3e-2;
   EXPECT_NE(fsi::fingerprint(i), f);
+  fsi::Scenario j = a;  // the same
+  j.numerics.cavitation_pressure_pa = -1e4;
+  EXPECT_NE(fsi::fingerprint(j), f);
 }
 
 TEST(ScenarioJson, FingerprintIsPinned) {

@@ -102,6 +102,13 @@ struct NumericsSpec {
   double cut_snap = 1.0e-6;
   /// T_m = id where the body is closer than this to a wall (the chapter's contact gap).
   double identity_gap_m = 0.0;    ///< 0: one patch height at the wall
+  /// Cavitation floor p_cav [Pa] (ours; 0 = off, the chapter). Where the fluid pressure
+  /// falls below p_cav the divergence equation lets the fluid expand,
+  /// div v = max(0, p_cav - p) / (rho_f nu_f) (rounded C^1 over |p_cav|/4), so the
+  /// pressure cannot fall far below p_cav. Without it the film under a rebounding ball
+  /// sucks the ball back with arbitrarily large tension and the ball never lifts off
+  /// (docs/solver.md, "The lift-off"). Range [-1e9, 0].
+  double cavitation_pressure_pa = 0.0;
 };
 
 /// Penalty contact (Sect. 12.5): P_c = gamma_c (dist_0 - dist)/dist for dist < dist_0.

@@ -48,7 +48,11 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
         for (int j = 0; j < 2; ++j) sigma[i][j] = mu_f * (G[i][j] + G[j][i]);
         sigma[i][i] -= p;
       }
-      const S div = G[0][0] + G[1][1];
+      S div = G[0][0] + G[1][1];
+      // Cavitation floor: below p_cav the fluid may expand at a rate set by the deficit,
+      // which keeps p from falling far below p_cav (a vapour-pressure-like limit).
+      if (c.cavitation_p_pa != 0.0)
+        div -= rounded_ramp(c.cavitation_p_pa - p, c.cavitation_smoothing_pa) / mu_f;
       for (int a = 0; a < n; ++a) {
         const double N = qp.value[a], dx = qp.grad[a].x(), dy = qp.grad[a].y();
         for (int i = 0; i < 2; ++i) r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);

@@ -6,7 +6,8 @@
 /// Fluid sub-element (rho_f, sigma_f = rho_f nu_f (grad v + grad v^T) - p I):
 ///   momentum   (rho_f ((v - v_old∘T)/k + ((v - d_t T) . grad) v), phi) + (sigma_f, grad phi)
 ///              - <rho_f nu_f grad v^T n, phi>_{open boundary}        (do-nothing correction, 12.1)
-///   pressure   (div v, xi)_F   [+ S_aniso(p, xi), assembled separately]
+///   pressure   (div v - ramp(p_cav - p) / (rho_f nu_f), xi)_F   [+ S_aniso(p, xi), assembled
+///              separately; the ramp is the optional cavitation floor, 0 by default]
 ///   displacement: harmonic extension (grad u, grad psi)_F on nodes not touching the solid
 /// Solid sub-element (St. Venant-Kirchhoff, Eulerian, 12.2; F = I - grad u, J = det F,
 /// E = (F^-T F^-1 - I)/2, sigma_s = J F^-1 (2 mu E + lambda tr E I) F^-T, rho_s = J rho_s^0):
@@ -37,7 +38,22 @@ struct FsiCoefficients {
   double alpha = 0.1, s = 2.0;  ///< solid velocity stabilization alpha h^s
   double extension_u = 1.0;     ///< weight of the displacement extension rows
   double extension_p = 1.0;     ///< weight of the pressure extension rows
+  /// Cavitation floor (NumericsSpec::cavitation_pressure_pa): off when cavitation_p_pa == 0.
+  double cavitation_p_pa = 0.0;
+  double cavitation_smoothing_pa = 0.0;  ///< width of the C^1 rounding of the ramp
 };
+
+/// max(0, x) rounded C^1 over [-w/2, w/2]: the quadratic (x + w/2)^2 / (2 w) in between.
+/// Newton sees a continuous derivative where the floor switches on; a kink there made
+/// the iteration bounce between the two branches.
+template <class S>
+S rounded_ramp(const S& x, double w) {
+  const double xv = value_of(x);
+  if (xv <= -0.5 * w) return S(0.0);
+  if (xv >= 0.5 * w) return x;
+  const S t = x + 0.5 * w;
+  return t * t / (2.0 * w);
+}
 
 /// Per quadrature point values fixed during the Newton loop: old values at T_m(x, t_{m-1})
 /// and the mesh velocity d_t T.

@@ -96,6 +96,8 @@ std::string fingerprint(const Scenario& scenario) {
   if (scenario.numerics.cip_wall_film_factor == defaults.cip_wall_film_factor)
     writer.object["numerics"].erase("cip_wall_film_factor");
   if (scenario.numerics.cut_snap == defaults.cut_snap) writer.object["numerics"].erase("cut_snap");
+  if (scenario.numerics.cavitation_pressure_pa == defaults.cavitation_pressure_pa)
+    writer.object["numerics"].erase("cavitation_pressure_pa");
   const std::string canonical =
       writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   char hex[17];
