@@ -36,6 +36,10 @@ touched { next }
 END {
   if (best_dt > 1e-4) mass = ""   # the run did not reach t = 3 s (or touched before)
   if (touched && state != "done") dmax = -1
+  if (!touched && state == "approach") {
+    printf "# first contact not reached (or not left by 2 mm) by the end of the run at t = %.4f s\n", t > "/dev/stderr"
+    dmin = 1e300
+  }
   unconfirmed = (!touched && state == "rebound" && !confirmed)
   if (unconfirmed) {
     printf "# rebound maximum not confirmed: %.4e m at t = %.4f s and the run ended before the ball fell 2 mm below it\n", dmax, tmax > "/dev/stderr"
@@ -44,7 +48,9 @@ END {
   if (touched) printf "# real contact at t = %.4f s: the rest of the run is not used\n", t_touch > "/dev/stderr"
   printf "%s,%s,%s,%s,%s\n", nodes, k, (dmin < 1e300 ? sprintf("%.6e", dmin) : ""),
          (dmax >= 0 ? sprintf("%.6e", dmax) : ""), mass
-  printf "# first contact at t = %.4f s", tmin > "/dev/stderr"
-  if (dmax >= 0) printf ", first rebound maximum at t = %.4f s", tmax > "/dev/stderr"
-  printf "\n" > "/dev/stderr"
+  if (dmin < 1e300) {
+    printf "# first contact at t = %.4f s", tmin > "/dev/stderr"
+    if (dmax >= 0) printf ", first rebound maximum at t = %.4f s", tmax > "/dev/stderr"
+    printf "\n" > "/dev/stderr"
+  }
 }
