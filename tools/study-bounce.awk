@@ -4,11 +4,12 @@
 #
 # A contact ends with a local minimum of min_distance_m below 5 cm, confirmed once the
 # ball has risen 0.5 mm above it; the rebound maximum is the largest distance after that,
-# until the ball has come back down half way towards that minimum while its mean vertical
-# velocity points down (the same rule as tools/example1-table.awk; the velocity condition
-# because during a lift-off the distance, taken under the rim, wiggles by fractions of a
-# millimetre while the ball rises: 6.7e-4 -> 1.2e-3 -> 5.0e-4 m in Example 1). rest_distance is the distance in the last row. A value is
-# empty when the run did not get that far (e.g. the ball stuck in real contact). Rows with
+# until the ball has come back down half way towards that minimum (tools/example1-table.awk's
+# rule) while its mean vertical velocity points down: during a lift-off the distance,
+# taken under the rim, wiggles by fractions of a millimetre while the ball rises
+# (6.7e-4 -> 1.2e-3 -> 5.0e-4 m in Example 1), which is not a rebound. rest_distance is
+# the distance in the last row. A value is empty when the run did not get that far (e.g.
+# the ball stuck in real contact). Rows with
 # a relative mass error above max_mass_error (default 0.5: the step at which fsi-movie
 # stops a degenerated body) are not a ball any more and are skipped.
 BEGIN {
