@@ -40,7 +40,8 @@ TEST(ScenarioAssets, EveryFileLoadsAndIsNamedUniquely) {
     }
     EXPECT_EQ(s.source, entry.path());
     EXPECT_TRUE(names.emplace(s.name, entry.path()).second) << "name used twice: " << s.name;
-    EXPECT_EQ(s.numerics.cavitation_pressure_pa, -1.0e4) << entry.path() << ": every shipped scenario uses the floor";
+    EXPECT_EQ(s.numerics.cavitation_pressure_pa, -1.0e4)
+        << entry.path() << ": every shipped scenario uses the floor";
     ++count;
   }
   EXPECT_GE(count, 16);

@@ -148,7 +148,8 @@ void visit_fields(V& v, S& n) {
   v("blend_delta_patches", n.blend_delta_patches, Real{0.0, 100.0, true, false, "patches"});
   v("cut_snap", n.cut_snap, Real{0.0, 0.25});
   v("identity_gap_m", n.identity_gap_m, Real{0.0, 1.0e3, false, false, "m (0: one patch)"});
-  v("cavitation_pressure_pa", n.cavitation_pressure_pa, Real{-1.0e9, 0.0, false, false, "Pa (0: off)"});
+  v("cavitation_pressure_pa", n.cavitation_pressure_pa,
+    Real{-1.0e9, 0.0, false, false, "Pa (0: off)"});
 }
 
 template <class V, Like<ContactSpec> S>
