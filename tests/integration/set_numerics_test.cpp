@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 #include <fsi/error.hpp>
@@ -61,6 +62,28 @@ TEST(SetNumerics, RefusesAValueOutOfRangeAndKeepsTheOldOnes) {
   reference.step();
   engine.step();
   EXPECT_TRUE(bit_identical(reference, engine));
+}
+
+TEST(SetNumerics, CheckpointsSavedAfterwardsCarryTheNewNumerics) {
+  const fsi::Scenario original = fsi::testing::coarse_example1();
+  fsi::Engine engine(original);
+  fsi::NumericsSpec n = original.numerics;
+  n.cavitation_pressure_pa = -3e4;
+  engine.set_numerics(n);
+  EXPECT_EQ(engine.scenario().numerics.cavitation_pressure_pa, -3e4);
+  engine.step();
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "fsi_set_numerics_test.ckpt";
+  fsi::save_checkpoint(engine, file);
+  fsi::Scenario changed = original;
+  changed.numerics = n;
+  fsi::Engine same_numerics(changed);
+  EXPECT_NO_THROW(fsi::load_checkpoint(same_numerics, file));
+  EXPECT_TRUE(bit_identical(engine, same_numerics));
+  fsi::Engine old_numerics(original);
+  EXPECT_THROW(fsi::load_checkpoint(old_numerics, file), fsi::InputError)
+      << "a checkpoint made with changed numerics loaded into the original scenario";
+  std::filesystem::remove(file);
 }
 
 }  // namespace

@@ -64,6 +64,7 @@ class Engine {
   /// Restore a state saved from an engine of the same scenario.
   void set_state(const State& state);
   /// Change a numerical parameter between steps (time step, Newton budget, ...).
+  /// scenario() reports the new numerics, and checkpoints saved afterwards carry them.
   void set_numerics(const NumericsSpec& numerics);
 
   /// Copy of the current mesh and fields for renderers and exporters.

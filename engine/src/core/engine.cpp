@@ -296,6 +296,9 @@ void Engine::set_numerics(const NumericsSpec& numerics) {
   Scenario changed = impl_->scenario;  // same checks as a scenario file's numerics
   changed.numerics = numerics;
   validate(changed);
+  // scenario() follows, so that a checkpoint saved from now on carries the fingerprint of
+  // the numerics that produced it (and loads only into an engine that runs them).
+  impl_->scenario.numerics = numerics;
   impl_->numerics = numerics;
   impl_->system.set_numerics(numerics);  // stabilization weights live in the system
 }
