@@ -31,7 +31,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 struct Engine::Impl {
   explicit Impl(Scenario s)
       : scenario((validate(s), std::move(s))),
-        numerics(scenario.numerics),
         mesh(mesh::build_patch_mesh(scenario.mesh, scenario.walls)),
         buckets(mesh),
         system(scenario, mesh),
@@ -39,8 +38,7 @@ struct Engine::Impl {
     initialize();
   }
 
-  Scenario scenario;
-  NumericsSpec numerics;  ///< may be changed between steps (set_numerics)
+  Scenario scenario;  ///< its numerics may be changed between steps (set_numerics)
   mesh::PatchMesh mesh;
   fe::PatchBuckets buckets;
   core::FsiSystem system;
@@ -52,7 +50,7 @@ struct Engine::Impl {
   fe::CutData data_next;
   fe::QuadratureTable quad_cur;
 
-  fe::CutOptions cut_options() const { return fe::CutOptions{numerics.cut_snap}; }
+  fe::CutOptions cut_options() const { return fe::CutOptions{scenario.numerics.cut_snap}; }
 
   void initialize() {
     const int n = mesh.num_nodes();
@@ -62,7 +60,7 @@ struct Engine::Impl {
     cut_cur = fe::build_cut_mesh(mesh, data0);
     cut_prev = cut_cur;
     state = State{};
-    state.time_step_s = numerics.time_step_s;
+    state.time_step_s = scenario.numerics.time_step_s;
     state.solution = Eigen::VectorXd::Zero(kFieldsPerNode * n);
     for (int i = 0; i < n; ++i)
       if (cut_cur.touches_solid[i]) {
@@ -126,9 +124,9 @@ struct Engine::Impl {
   interface::MappingOptions mapping_options(double k) const {
     interface::MappingOptions mo;
     mo.k_s = k;
-    mo.eps_patches = numerics.blend_eps_patches;
-    mo.delta_patches = numerics.blend_delta_patches;
-    mo.identity_gap_m = numerics.identity_gap_m;
+    mo.eps_patches = scenario.numerics.blend_eps_patches;
+    mo.delta_patches = scenario.numerics.blend_delta_patches;
+    mo.identity_gap_m = scenario.numerics.identity_gap_m;
     return mo;
   }
 
@@ -160,10 +158,10 @@ struct Engine::Impl {
 
     x = initial_guess();
     solve::NewtonOptions no;
-    no.budget = numerics.newton_budget;
-    no.rel_tol = numerics.newton_rel_tol;
-    no.abs_tol = numerics.newton_abs_tol;
-    no.reuse_contraction = numerics.reuse_contraction;
+    no.budget = scenario.numerics.newton_budget;
+    no.rel_tol = scenario.numerics.newton_rel_tol;
+    no.abs_tol = scenario.numerics.newton_abs_tol;
+    no.reuse_contraction = scenario.numerics.reuse_contraction;
     solve::NewtonResult r = newton.solve(system, x, no);
     if (r.factorization_point.size() > 0) {
       // Remember what determines the factorization now held, so a restored state can
@@ -221,7 +219,7 @@ struct Engine::Impl {
 
   StepReport step() {
     StepReport report;
-    double k = numerics.time_step_s;
+    double k = scenario.numerics.time_step_s;
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
     // start) is kept: when every halving fails too, that one is accepted and flagged,
@@ -233,19 +231,19 @@ struct Engine::Impl {
       const solve::NewtonResult r = attempt(k, quad, x, report);
       const bool finite = !r.non_finite && x.allFinite();
       report.converged = r.converged && finite;
-      if (report.converged || (finite && numerics.failure_policy == FailurePolicy::accept_and_flag)) {
+      if (report.converged || (finite && scenario.numerics.failure_policy == FailurePolicy::accept_and_flag)) {
         accept(std::move(x), k, std::move(quad), report);
         report.accepted = true;
         break;
       }
-      if (finite && numerics.failure_policy == FailurePolicy::halve_step) {
+      if (finite && scenario.numerics.failure_policy == FailurePolicy::halve_step) {
         const double reduction = r.norms.empty() ? 1.0 : r.norms.back() / std::max(r.norms.front(), 1e-300);
         if (reduction < best_reduction) {
           best_reduction = reduction;
           best_x = x;
           best_k = k;
         }
-        if (attempt_no < numerics.max_halvings) {
+        if (attempt_no < scenario.numerics.max_halvings) {
           k *= 0.5;
           report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
                                    "Newton did not converge: retrying with k = " + std::to_string(k)});
@@ -296,10 +294,10 @@ void Engine::set_numerics(const NumericsSpec& numerics) {
   Scenario changed = impl_->scenario;  // same checks as a scenario file's numerics
   changed.numerics = numerics;
   validate(changed);
-  // scenario() follows, so that a checkpoint saved from now on carries the fingerprint of
-  // the numerics that produced it (and loads only into an engine that runs them).
+  // The scenario is the one record of the numerics in use: scenario() reports them and a
+  // checkpoint saved from now on carries their fingerprint (and loads only into an
+  // engine that runs them).
   impl_->scenario.numerics = numerics;
-  impl_->numerics = numerics;
   impl_->system.set_numerics(numerics);  // stabilization weights live in the system
 }
 
