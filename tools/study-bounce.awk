@@ -7,9 +7,13 @@
 # until the ball has come back down half way towards that minimum (tools/example1-table.awk's
 # rule) while its mean vertical velocity points down: during a lift-off the distance,
 # taken under the rim, wiggles by fractions of a millimetre while the ball rises
-# (6.7e-4 -> 1.2e-3 -> 5.0e-4 m in Example 1), which is not a rebound. rest_distance is
+# (6.7e-4 -> 1.2e-3 -> 5.0e-4 m in Example 1), which is not a rebound; nor is a rise of
+# the distance while the ball's mean vertical velocity never turned upward (a dimple's rim
+# moving while the ball still approaches). rest_distance is
 # the distance in the last row. A value is empty when the run did not get that far (e.g.
-# the ball stuck in real contact). Rows with
+# the ball stuck in real contact). A rebound still rising in the last row counts (the run
+# ended in flight) unless -v stopped_early=1: a run stopped because its body degenerated
+# ends in the wiggles of its failure, not in a rebound. Rows with
 # a relative mass error above max_mass_error (default 0.5: the step at which fsi-movie
 # stops a degenerated body) are not a ball any more and are skipped.
 BEGIN {
@@ -25,20 +29,32 @@ NR == 1 {
 ("mass_error" in col) && $col["mass_error"] + 0 > max_mass_error { next }
 {
   d = $col["min_distance_m"] + 0; last = $col["min_distance_m"]
+  # Without a velocity column every rise counts as the ball moving up.
+  vy_known = "mean_vy_mps" in col
+  up = !vy_known || $col["mean_vy_mps"] + 0 > 0
+  falling = !vy_known || $col["mean_vy_mps"] + 0 < 0
   if (state == "approach") {
     if (d < dmin) dmin = d
-    if (dmin < 0.05 && d > dmin + 5e-4) { state = "rebound"; dmax = d }
+    if (dmin < 0.05 && d > dmin + 5e-4) { state = "rebound"; dmax = d; rose = up }
   } else if (state == "rebound") {
     if (d > dmax) dmax = d
-    falling = !("mean_vy_mps" in col) || $col["mean_vy_mps"] + 0 < 0
+    if (up) rose = 1
     if (falling && d < dmin + 0.5 * (dmax - dmin)) {
-      rebound[++n] = dmax
-      if (n == 2) state = "done"; else { state = "approach"; dmin = d; dmax = -1 }
+      if (!rose) {
+        # The ball never moved up: the distance under a deforming rim wiggled while it
+        # still approached (1e5 Pa: 2.6 -> 3.2 -> 0 mm at -0.11 m/s). Same contact.
+        state = "approach"; if (d < dmin) dmin = d; dmax = -1
+      } else {
+        rebound[++n] = dmax
+        if (n == 2) state = "done"; else { state = "approach"; dmin = d; dmax = -1 }
+      }
     }
   }
 }
 END {
-  if (state == "rebound" && dmax > dmin + 5e-4) rebound[++n] = dmax  # still rising at the end
+  # Still rising at the end: a rebound cut short by the end time, or, in a run that stopped
+  # early, the last wiggle before the failure (not a rebound).
+  if (state == "rebound" && rose && dmax > dmin + 5e-4 && !stopped_early) rebound[++n] = dmax
   printf "%s,%s,%s\n", (1 in rebound ? sprintf("%.6e", rebound[1]) : ""),
          (2 in rebound ? sprintf("%.6e", rebound[2]) : ""), last
 }

@@ -29,6 +29,34 @@ study_apps_or_die() {
   done
 }
 
+# Options every study script takes; study_common_option OPTION VALUE consumes them.
+#   --set KEY=VALUE  passed to every run (fsi-movie --set, e.g. /numerics/cut_snap=3e-2);
+#                    repeatable. A run directory records its settings
+#                    (study-settings.txt) and is only reused or continued with the same ones.
+#   --out DIR        the study's directory instead of out/study-<name>.
+study_sets_text=""
+study_common_option() {
+  case "$1" in
+    --set) [ -n "${2:-}" ] || { echo "$0: --set needs KEY=VALUE" >&2; exit 2; }
+           study_sets_text+="$2"$'\n' ;;
+    --out) [ -n "${2:-}" ] || { echo "$0: --out needs a directory" >&2; exit 2; }
+           study_out_option=$2 ;;
+    *) return 1 ;;
+  esac
+}
+
+# study_settings_match DIR: false (and says why) when DIR holds a run made with other
+# --set settings than this study's (study-settings.txt; none recorded = no settings).
+study_settings_match() {
+  local dir=$1 have=""
+  [ -f "$dir/functionals.csv" ] || return 0
+  [ -f "$dir/study-settings.txt" ] && have=$(cat "$dir/study-settings.txt")
+  [ "$have" = "${study_sets_text%$'\n'}" ] && return 0
+  echo "$dir was run with settings [${have//$'\n'/ }], this study has" \
+       "[${study_sets_text//$'\n'/ }]" >&2
+  return 1
+}
+
 # study_run_one END_TIME NAME SCENARIO [--set ...]: one run unless it already finished.
 study_run_one() {
   local end_time=$1 name=$2 scenario=$3; shift 3
@@ -37,6 +65,9 @@ study_run_one() {
     echo "reusing $dir"; return 0
   fi
   mkdir -p "$dir"
+  printf '%s' "$study_sets_text" > "$dir/study-settings.txt"
+  local sets=() line
+  while IFS= read -r line; do [ -n "$line" ] && sets+=(--set "$line"); done <<< "$study_sets_text"
   # A run that stopped (interrupted, killed, machine gone) goes on from its latest checkpoint.
   local go_on=()
   if compgen -G "$dir/checkpoints/step_*.ckpt" > /dev/null && [ -f "$dir/functionals.csv" ]; then
@@ -44,7 +75,7 @@ study_run_one() {
   fi
   local start=$SECONDS
   if OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" "${go_on[@]}" \
-       --set /numerics/failure_policy='"halve_step"' --end-time "$end_time" \
+       --set /numerics/failure_policy='"halve_step"' "${sets[@]}" --end-time "$end_time" \
        --checkpoint-every 250 --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
     echo "finished $dir in $((SECONDS - start)) s"
   else
@@ -62,12 +93,22 @@ study_run_one() {
 # (--summary-only) none: the summary then covers the runs that exist.
 study_run_all() {
   local jobs=$1 end_time=$2
-  export -f study_run_one study_run_finished; export study_out FSI_MOVIE
+  export -f study_run_one study_run_finished; export study_out FSI_MOVIE study_sets_text
   if [ "${study_summary_only:-0}" = 1 ]; then cat > /dev/null; return 0; fi
+  local runs name refused=0
+  runs=$(awk -v only="${study_only:-}" 'BEGIN { n = split(only, o, ","); for (i = 1; i <= n; ++i) keep[o[i]] = 1 }
+                                        n == 0 || ($1 in keep)')
+  # A run directory is reused or continued only with the settings it was made with.
+  while read -r name _; do
+    [ -n "$name" ] && ! study_settings_match "$study_out/$name" && refused=1
+  done <<< "$runs"
+  if ((refused)); then
+    echo "$0: REFUSED: use the same --set settings, --out DIR for another directory, or remove the run" >&2
+    exit 3
+  fi
   # Each line becomes the arguments of one study_run_one call (words split by the shell).
-  awk -v only="${study_only:-}" 'BEGIN { n = split(only, o, ","); for (i = 1; i <= n; ++i) keep[o[i]] = 1 }
-                                 n == 0 || ($1 in keep)' |
-    xargs -P "$jobs" -L 1 bash -c 'study_run_one "$0" "$@"' "$end_time"
+  [ -n "$runs" ] && xargs -P "$jobs" -L 1 bash -c 'study_run_one "$0" "$@"' "$end_time" <<< "$runs"
+  return 0
 }
 
 # study_contacts SUMMARY_JSON: the touch-downs as "wall@time;wall@time..." (fsi-movie's
@@ -104,6 +145,24 @@ study_stopped_early() {
   local why
   why=$(study_stop_reason "$1/summary.json")
   [ -n "$why" ] && echo "$1: $why"
+}
+
+# study_bounce DIR: first_rebound_max,second_rebound_max,rest_distance of the run in DIR
+# (tools/study-bounce.awk; a run stopped early has no rest distance and no rebound that
+# was still rising when it stopped).
+study_bounce() {
+  local stopped=0 reduced
+  [ -n "$(study_stop_reason "$1/summary.json")" ] && stopped=1
+  reduced=$(awk -v max_mass_error="$study_degenerate_mass_error" -v stopped_early="$stopped" \
+            -f tools/study-bounce.awk "$1/functionals.csv")
+  ((stopped)) && reduced="${reduced%,*},"
+  echo "$reduced"
+}
+
+# study_settings_note: one line naming the --set settings of this study (empty if none).
+study_settings_note() {
+  [ -n "$study_sets_text" ] && echo "settings (--set): ${study_sets_text//$'\n'/ }"
+  return 0
 }
 
 # study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).

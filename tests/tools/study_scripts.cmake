@@ -1,0 +1,79 @@
+# The study scripts' shared pieces, without running the engine:
+#  - tools/study-bounce.awk on small hand-made CSVs (a real double bounce, the wiggle of a
+#    dimple's rim while the ball still approaches, a run that stopped while rising);
+#  - tools/study-common.sh's --set/--out: a run directory records its settings, is reused
+#    with the same ones and refused with others (a stub stands in for fsi-movie).
+# Inputs: -DSOURCE_DIR -DBINARY_DIR.
+find_program(AWK NAMES awk mawk gawk REQUIRED)
+find_program(BASH bash REQUIRED)
+set(_dir ${BINARY_DIR}/tools-test-output/study-scripts)
+file(REMOVE_RECURSE ${_dir})
+file(MAKE_DIRECTORY ${_dir})
+
+function(expect_bounce csv want)
+  execute_process(COMMAND ${AWK} ${ARGN} -f ${SOURCE_DIR}/tools/study-bounce.awk ${_dir}/${csv}
+    RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT _rc EQUAL 0 OR NOT _out STREQUAL want)
+    message(FATAL_ERROR "study-bounce.awk ${ARGN} ${csv}: got '${_out}' (exit ${_rc}, ${_err}), want '${want}'")
+  endif()
+endfunction()
+
+set(_head "time_s,min_distance_m,mean_vy_mps,mass_error\n")
+# Falls, rebounds to 5 cm, falls, rebounds to 1 cm, settles 2 mm up.
+file(WRITE ${_dir}/bounce.csv "${_head}0,0.1,-0.3,0\n1,0.001,-0.1,0\n2,0.02,0.2,0\n3,0.05,0,0\n4,0.02,-0.2,0\n5,0.001,-0.1,0\n6,0.01,0.1,0\n7,0.004,-0.1,0\n8,0.002,0,0\n")
+expect_bounce(bounce.csv "5.000000e-02,1.000000e-02,0.002")
+# The distance under a deforming rim rises 0.6 mm while the ball still moves down: no rebound.
+file(WRITE ${_dir}/wiggle.csv "${_head}0,0.1,-0.3,0\n1,0.0026,-0.11,0\n2,0.0032,-0.11,0\n3,0,-0.11,0\n4,0,0,0\n")
+expect_bounce(wiggle.csv ",,0")
+# Rising in the last row: a rebound cut short by the end time, but not when the run stopped
+# early; the degenerated last row (mass error 1.9 > 0.5) is skipped either way.
+file(WRITE ${_dir}/rising.csv "${_head}0,0.1,-0.3,0\n1,0.001,-0.1,0\n2,0.003,0.1,0\n3,7.5,-0.5,1.9\n")
+expect_bounce(rising.csv "3.000000e-03,,0.003")
+expect_bounce(rising.csv ",,0.003" -v stopped_early=1)
+
+# A stub fsi-movie: records its arguments, writes a finished run.
+set(_stub ${_dir}/fake-fsi-movie)
+file(WRITE ${_stub} "#!/usr/bin/env bash
+dir=$2; printf '%s\\n' \"$@\" >> \"$dir/calls.txt\"
+printf '${_head}0,0.1,-0.3,0\\n1,0.001,-0.1,0\\n2,0.02,0.2,0\\n' > \"$dir/functionals.csv\"
+printf '{\\n  \"final\": true,\\n  \"contact_sequence\": \"\"\\n}\\n' > \"$dir/summary.json\"
+")
+file(CHMOD ${_stub} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+set(_run d0_1e-2_g800)
+function(run_study want_rc)
+  execute_process(COMMAND env FSI_STUDY_NO_BUILD=1 FSI_MOVIE=${_stub}
+      ${BASH} ${SOURCE_DIR}/tools/study-contact --jobs 1 --end-time 0.1 --only ${_run}
+      --out ${_dir}/study ${ARGN}
+    RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+  message("study-contact ${ARGN} -> ${_rc}\n${_out}${_err}")
+  if(NOT _rc EQUAL want_rc)
+    message(FATAL_ERROR "study-contact ${ARGN}: exit ${_rc}, want ${want_rc}")
+  endif()
+  set(_study_err "${_err}" PARENT_SCOPE)
+endfunction()
+set(_calls ${_dir}/study/${_run}/calls.txt)
+run_study(0 --set /numerics/cut_snap=3e-2)
+file(STRINGS ${_calls} _args)
+list(FIND _args /numerics/cut_snap=3e-2 _found)
+if(_found EQUAL -1)
+  message(FATAL_ERROR "the run was not given --set /numerics/cut_snap=3e-2: ${_args}")
+endif()
+run_study(0 --set /numerics/cut_snap=3e-2)  # finished with these settings: reused
+file(STRINGS ${_calls} _args_again)
+if(NOT _args_again STREQUAL _args)
+  message(FATAL_ERROR "a finished run with the same settings was run again")
+endif()
+run_study(3)  # other settings (none): refused, the run left as it was
+if(NOT _study_err MATCHES "cut_snap=3e-2.*REFUSED")
+  message(FATAL_ERROR "a run made with other settings was not refused: ${_study_err}")
+endif()
+file(STRINGS ${_calls} _args_again)
+if(NOT _args_again STREQUAL _args)
+  message(FATAL_ERROR "a run made with other settings was run again")
+endif()
+run_study(2 --set)  # --set without a value: usage error
+run_study(0 --summary-only)  # the summary leaves the run with other settings out
+file(READ ${_dir}/study/summary.csv _summary)
+if(NOT _summary STREQUAL "dist0,gamma_c,real_contact_time,first_rebound_max,rest_distance\n")
+  message(FATAL_ERROR "the summary of a study without settings holds a run made with some: ${_summary}")
+endif()
