@@ -45,9 +45,12 @@ EarlierRun read_earlier_run(const fs::path& out_dir) {
   std::ifstream in(csv);
   if (!in) throw InputError(csv.string(), "", "cannot read the earlier run's functionals");
   std::string line;
-  if (!std::getline(in, line) || line != io::functionals_csv_header(true)) {
+  if (!std::getline(in, line) || !io::is_functionals_csv_header(line, true)) {
     throw InputError(csv.string(), "header", "not an fsi-movie functionals file with newton columns");
   }
+  // Rows of an older file (without the cavitation column) are rewritten in today's
+  // columns, so that the continued file has one header.
+  const bool older_columns = line != io::functionals_csv_header(true);
   bool found = false;
   for (std::size_t line_no = 2; std::getline(in, line); ++line_no) {
     if (line.empty()) continue;
@@ -58,7 +61,7 @@ EarlierRun read_earlier_run(const fs::path& out_dir) {
       throw InputError(csv.string(), "line " + std::to_string(line_no), why.what());
     }
     if (r.step > e.step) break;
-    e.csv_rows.push_back(line);
+    e.csv_rows.push_back(older_columns ? io::functionals_csv_row(r) : line);
     e.rows.push_back(r);
     if (r.step == e.step) {
       e.time_s = r.time_s;

@@ -21,6 +21,7 @@ nlohmann::ordered_json functionals_json(const Functionals& f) {
   o["mean_vy_mps"] = number_json(f.mean_vy_mps);
   o["solid_area_m2"] = number_json(f.solid_area_m2);
   o["mass_error"] = number_json(f.mass_error);
+  o["cavitation_rate_m2ps"] = number_json(f.cavitation_rate_m2ps);
   return o;
 }
 

@@ -39,7 +39,7 @@ fsi::State sample_state() {
   fsi::State s;
   s.step = 42;
   s.time_s = 0.084;
-  s.functionals = {1.0 / 3.0, -0.6, 0.4, -0.41, 0.41, 1e-17, -0.2, -3e-5, -0.25, 0.502, 2e-7};
+  s.functionals = {1.0 / 3.0, -0.6, 0.4, -0.41, 0.41, 1e-17, -0.2, -3e-5, -0.25, 0.502, 2e-7, 3.5e-4};
   return s;
 }
 
@@ -56,6 +56,7 @@ TEST(FunctionalsCsv, RowsReadBackExactly) {
   EXPECT_EQ(r.functionals.mean_vx_mps, s.functionals.mean_vx_mps);
   EXPECT_EQ(r.functionals.mean_vy_mps, s.functionals.mean_vy_mps);
   EXPECT_EQ(r.functionals.mass_error, 2e-7);
+  EXPECT_EQ(r.functionals.cavitation_rate_m2ps, 3.5e-4);
   EXPECT_EQ(r.newton_iterations, 7);
   EXPECT_FALSE(r.converged);
   EXPECT_THROW(fsi::io::parse_functionals_csv_row("1,2,x"), std::invalid_argument);
@@ -65,8 +66,31 @@ TEST(FunctionalsCsv, RowsReadBackExactly) {
 TEST(FunctionalsCsv, HeaderNamesEveryColumn) {
   EXPECT_EQ(fsi::io::functionals_csv_header(false),
             "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
-            "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error");
-  EXPECT_EQ(cells(fsi::io::functionals_csv_header(true)).size(), 15u);
+            "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error,cavitation_rate_m2ps");
+  EXPECT_EQ(cells(fsi::io::functionals_csv_header(true)).size(), 16u);
+}
+
+// Runs written before the cavitation column (sessions <= 8) must still continue: their
+// header is accepted and their rows read with the rate 0, and written back in today's columns.
+TEST(FunctionalsCsv, FilesWithoutTheCavitationColumnReadBack) {
+  const std::string old_header =
+      "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
+      "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error,newton_iterations,converged";
+  EXPECT_TRUE(fsi::io::is_functionals_csv_header(old_header, true));
+  EXPECT_TRUE(fsi::io::is_functionals_csv_header(fsi::io::functionals_csv_header(true), true));
+  EXPECT_FALSE(fsi::io::is_functionals_csv_header(old_header, false));
+  EXPECT_FALSE(fsi::io::is_functionals_csv_header("step,time_s", true));
+  const fsi::io::FunctionalsCsvRow r =
+      fsi::io::parse_functionals_csv_row("3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,0.007,4,1");
+  EXPECT_EQ(r.step, 3);
+  EXPECT_EQ(r.functionals.mass_error, 0.007);
+  EXPECT_EQ(r.functionals.cavitation_rate_m2ps, 0.0);
+  EXPECT_EQ(r.newton_iterations, 4);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(fsi::io::functionals_csv_row(r), "3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,0.007,0,4,1");
+  // One column short of either layout.
+  EXPECT_THROW(fsi::io::parse_functionals_csv_row("3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,4,1"),
+               std::invalid_argument);
 }
 
 TEST(FunctionalsCsv, RowsReadBackExactlyInHeaderOrder) {
@@ -88,7 +112,8 @@ TEST(FunctionalsCsv, RowsReadBackExactlyInHeaderOrder) {
   const std::vector<double> expected{s.time_s,       f.min_distance_m, f.bottom_y_m,
                                      f.top_y_m,      f.left_x_m,       f.right_x_m,
                                      f.centroid_x_m, f.centroid_y_m,   f.mean_vx_mps,
-                                     f.mean_vy_mps,  f.solid_area_m2,  f.mass_error};
+                                     f.mean_vy_mps,  f.solid_area_m2,  f.mass_error,
+                                     f.cavitation_rate_m2ps};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(std::strtod(row[i + 1].c_str(), nullptr), expected[i]) << header[i + 1];
   }
@@ -110,7 +135,7 @@ TEST(FunctionalsCsv, NewtonColumnsComeFromTheStepReport) {
   }
   const auto all = lines(file);
   ASSERT_EQ(all.size(), 3u);
-  EXPECT_EQ(cells(all[1]).size(), 15u);
+  EXPECT_EQ(cells(all[1]).size(), 16u);
   EXPECT_EQ(all[1].substr(all[1].size() - 4), ",5,0");
   EXPECT_EQ(all[2].substr(all[2].size() - 4), ",5,1");
 

@@ -83,19 +83,23 @@ void write_vtk_frame(const std::filesystem::path& folder, const std::string& ste
 // ---- functionals as CSV ------------------------------------------------------------
 // The time series of the chapter's functionals as CSV, one row per time level:
 //   step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,
-//   centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error
+//   centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error,cavitation_rate_m2ps
 // plus, optionally, the step's solver report: newton_iterations,converged (0/1).
 // Doubles are written in shortest round-trip form (full precision, reads back exactly);
 // every row is flushed, so the file is usable while the run goes on or after it stops.
 
 /// The header line (without newline).
 std::string functionals_csv_header(bool with_newton_columns);
+/// True for the header line, or for that of files written before cavitation_rate_m2ps
+/// existed (their rows read back with the rate 0).
+bool is_functionals_csv_header(const std::string& line, bool with_newton_columns);
 
 /// One data line (without newline). Without a report, only the functional columns.
 std::string functionals_csv_row(long step, double time_s, const Functionals& functionals);
 
 /// One row of a functionals CSV with the newton columns, read back (e.g. to continue a
-/// run). Throws std::invalid_argument on a cell that is not a number or a wrong count.
+/// run; a row of a file without cavitation_rate_m2ps reads with it 0). Throws
+/// std::invalid_argument on a cell that is not a number or a wrong count.
 struct FunctionalsCsvRow {
   long step = 0;
   double time_s = 0.0;
@@ -104,6 +108,8 @@ struct FunctionalsCsvRow {
   bool converged = false;
 };
 FunctionalsCsvRow parse_functionals_csv_row(const std::string& line);
+/// The row again, in this version's columns.
+std::string functionals_csv_row(const FunctionalsCsvRow& row);
 std::string functionals_csv_row(long step, double time_s, const Functionals& functionals,
                                 const StepReport& report);
 

@@ -26,6 +26,11 @@ struct Functionals {
   double mean_vx_mps = 0.0;      ///< solid-averaged horizontal velocity
   double solid_area_m2 = 0.0;    ///< |S_h|
   double mass_error = 0.0;       ///< j_mass = |pi r^2 rho0 - int_S J rho0| / (pi r^2 rho0)
+  /// Fluid area the cavitation floor creates per second [m^2/s]: the integral over the
+  /// fluid of the expansion rate it allows where p < p_cav (numerics.cavitation_pressure_pa;
+  /// 0 with the floor off). Not the chapter's: a measure of what the floor changes in an
+  /// incompressible fluid (compare with the ball's area, pi r^2).
+  double cavitation_rate_m2ps = 0.0;
 };
 
 struct FactorizationOrigin;

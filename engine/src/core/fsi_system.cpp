@@ -57,7 +57,7 @@ void FsiSystem::set_numerics(const NumericsSpec& numerics) {
   coefficients_.alpha = numerics.solid_alpha;
   coefficients_.s = numerics.solid_s;
   coefficients_.cavitation_p_pa = numerics.cavitation_pressure_pa;
-  coefficients_.cavitation_smoothing_pa = 0.25 * std::abs(numerics.cavitation_pressure_pa);
+  coefficients_.cavitation_smoothing_pa = forms::cavitation_smoothing_pa(numerics.cavitation_pressure_pa);
 }
 
 void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,

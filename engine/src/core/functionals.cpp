@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "forms/fsi_element.hpp"
 #include "mesh/walls.hpp"
 
 namespace fsi::core {
@@ -27,10 +28,21 @@ Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geo
     }
   if (geometry.interface.empty()) f.min_distance_m = f.bottom_y_m = f.top_y_m = f.left_x_m = f.right_x_m = 0.0;
 
-  double area = 0.0, mass = 0.0, cx = 0.0, cy = 0.0, mvx = 0.0, mvy = 0.0;
+  double area = 0.0, mass = 0.0, cx = 0.0, cy = 0.0, mvx = 0.0, mvy = 0.0, created = 0.0;
+  const double p_cav = scenario.numerics.cavitation_pressure_pa;
+  const double mu_f = scenario.fluid.density_kgpm3 * scenario.fluid.viscosity_m2ps;
   for (int k = 0; k < cut.num_elements(); ++k) {
     const fe::SubElement& e = cut.elements[k];
-    if (e.phase != Phase::solid) continue;
+    if (e.phase != Phase::solid) {
+      if (p_cav == 0.0) continue;
+      for (int q = quadrature.first[k]; q < quadrature.first[k + 1]; ++q) {
+        const fe::QuadraturePoint& qp = quadrature.points[q];
+        double p = 0.0;
+        for (int a = 0; a < e.vertices; ++a) p += qp.value[a] * solution[kFieldsPerNode * e.node[a] + kP];
+        created += qp.weight * forms::cavitation_expansion_rate(p, p_cav, mu_f);
+      }
+      continue;
+    }
     for (int q = quadrature.first[k]; q < quadrature.first[k + 1]; ++q) {
       const fe::QuadraturePoint& qp = quadrature.points[q];
       double vx = 0, vy = 0, h00 = 0, h01 = 0, h10 = 0, h11 = 0;
@@ -53,6 +65,7 @@ Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geo
     }
   }
   f.solid_area_m2 = area;
+  f.cavitation_rate_m2ps = created;
   if (area > 0.0) {
     f.centroid_x_m = cx / area;
     f.centroid_y_m = cy / area;

@@ -43,6 +43,11 @@ struct FsiCoefficients {
   double cavitation_smoothing_pa = 0.0;  ///< width of the C^1 rounding of the ramp
 };
 
+/// Width of the rounding of the cavitation floor's ramp: a quarter of |p_cav|.
+inline double cavitation_smoothing_pa(double cavitation_p_pa) {
+  return 0.25 * (cavitation_p_pa < 0.0 ? -cavitation_p_pa : cavitation_p_pa);
+}
+
 /// max(0, x) rounded C^1 over [-w/2, w/2]: the quadratic (x + w/2)^2 / (2 w) in between.
 /// Newton sees a continuous derivative where the floor switches on; a kink there made
 /// the iteration bounce between the two branches.
@@ -53,6 +58,13 @@ S rounded_ramp(const S& x, double w) {
   if (xv >= 0.5 * w) return x;
   const S t = x + 0.5 * w;
   return t * t / (2.0 * w);
+}
+
+/// Rate at which the floor lets the fluid expand at pressure p [1/s]: the term taken off
+/// div v in the fluid's divergence row (0 with the floor off, p_cav == 0).
+inline double cavitation_expansion_rate(double p_pa, double cavitation_p_pa, double mu_f_pas) {
+  if (cavitation_p_pa == 0.0) return 0.0;
+  return rounded_ramp(cavitation_p_pa - p_pa, cavitation_smoothing_pa(cavitation_p_pa)) / mu_f_pas;
 }
 
 /// Per quadrature point values fixed during the Newton loop: old values at T_m(x, t_{m-1})

@@ -10,24 +10,35 @@
 
 namespace fsi::io {
 
-std::string functionals_csv_header(bool with_newton_columns) {
-  std::string h =
-      "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
-      "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error";
-  if (with_newton_columns) h += ",newton_iterations,converged";
-  return h;
-}
-
 namespace {
+
+/// The columns every version wrote; files written before the cavitation column existed
+/// (before session 9) end here and still read back (continued runs).
+constexpr const char* kCommonHeader =
+    "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
+    "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error";
+constexpr const char* kNewtonHeader = ",newton_iterations,converged";
 
 /// The functionals in the header's order (after step and time_s).
 constexpr double Functionals::*kColumns[] = {
     &Functionals::min_distance_m, &Functionals::bottom_y_m,   &Functionals::top_y_m,
     &Functionals::left_x_m,       &Functionals::right_x_m,    &Functionals::centroid_x_m,
     &Functionals::centroid_y_m,   &Functionals::mean_vx_mps,  &Functionals::mean_vy_mps,
-    &Functionals::solid_area_m2,  &Functionals::mass_error};
+    &Functionals::solid_area_m2,  &Functionals::mass_error, &Functionals::cavitation_rate_m2ps};
+constexpr std::size_t kLegacyColumns = std::size(kColumns) - 1;  // without cavitation_rate_m2ps
 
 }  // namespace
+
+std::string functionals_csv_header(bool with_newton_columns) {
+  std::string h = std::string(kCommonHeader) + ",cavitation_rate_m2ps";
+  if (with_newton_columns) h += kNewtonHeader;
+  return h;
+}
+
+bool is_functionals_csv_header(const std::string& line, bool with_newton_columns) {
+  const std::string legacy = std::string(kCommonHeader) + (with_newton_columns ? kNewtonHeader : "");
+  return line == functionals_csv_header(with_newton_columns) || line == legacy;
+}
 
 std::string functionals_csv_row(long step, double time_s, const Functionals& f) {
   std::string row = std::to_string(step);
@@ -53,23 +64,30 @@ FunctionalsCsvRow parse_functionals_csv_row(const std::string& line) {
     begin = end + 1;
   }
   constexpr std::size_t kWithNewton = 2 + std::size(kColumns) + 2;
-  if (v.size() != kWithNewton) {
-    throw std::invalid_argument("expected " + std::to_string(kWithNewton) + " columns, got " +
-                                std::to_string(v.size()));
+  constexpr std::size_t kLegacyWithNewton = 2 + kLegacyColumns + 2;
+  if (v.size() != kWithNewton && v.size() != kLegacyWithNewton) {
+    throw std::invalid_argument("expected " + std::to_string(kWithNewton) + " columns (or " +
+                                std::to_string(kLegacyWithNewton) + " in files written before " +
+                                "cavitation_rate_m2ps), got " + std::to_string(v.size()));
   }
   FunctionalsCsvRow r;
   r.step = static_cast<long>(v[0]);
   r.time_s = v[1];
-  for (std::size_t i = 0; i < std::size(kColumns); ++i) r.functionals.*kColumns[i] = v[2 + i];
-  r.newton_iterations = static_cast<int>(v[kWithNewton - 2]);
-  r.converged = v[kWithNewton - 1] != 0.0;
+  const std::size_t columns = v.size() - 4;
+  for (std::size_t i = 0; i < columns; ++i) r.functionals.*kColumns[i] = v[2 + i];
+  r.newton_iterations = static_cast<int>(v[v.size() - 2]);
+  r.converged = v[v.size() - 1] != 0.0;
   return r;
+}
+
+std::string functionals_csv_row(const FunctionalsCsvRow& row) {
+  return functionals_csv_row(row.step, row.time_s, row.functionals) + "," +
+         std::to_string(row.newton_iterations) + (row.converged ? ",1" : ",0");
 }
 
 std::string functionals_csv_row(long step, double time_s, const Functionals& f,
                                 const StepReport& report) {
-  return functionals_csv_row(step, time_s, f) + "," + std::to_string(report.newton_iterations) +
-         (report.converged ? ",1" : ",0");
+  return functionals_csv_row({step, time_s, f, report.newton_iterations, report.converged});
 }
 
 FunctionalsCsv::FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns)
