@@ -77,3 +77,19 @@ file(READ ${_dir}/study/summary.csv _summary)
 if(NOT _summary STREQUAL "dist0,gamma_c,real_contact_time,first_rebound_max,rest_distance\n")
   message(FATAL_ERROR "the summary of a study without settings holds a run made with some: ${_summary}")
 endif()
+
+# tools/contact-rest-distances: the static balance of the penalty force against the
+# ball's weight lands on the chapter's rest distances (3.18e-3, 1.77e-3, 1.21e-3 m) within 3 %.
+execute_process(COMMAND ${BASH} ${SOURCE_DIR}/tools/contact-rest-distances --csv ${_dir}/rest.csv
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "contact-rest-distances: exit ${_rc}: ${_out}${_err}")
+endif()
+# Each chapter row: |static - chapter| <= 3 % of the chapter's; prints how many rows passed.
+execute_process(COMMAND ${AWK} -F, "NR > 1 && $4 != \"\" { n += ($3 - $4) ^ 2 <= (0.03 * $4) ^ 2 } END { print n + 0 }"
+    ${_dir}/rest.csv
+  OUTPUT_VARIABLE _passed OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT _passed EQUAL 3)
+  file(READ ${_dir}/rest.csv _rest)
+  message(FATAL_ERROR "the static rest gaps are not within 3 % of the chapter's three (${_passed} are):\n${_rest}")
+endif()
