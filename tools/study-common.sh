@@ -165,6 +165,19 @@ study_settings_note() {
   return 0
 }
 
+# study_json_value JSON OBJECT KEY: the number KEY of the object OBJECT in a scenario
+# JSON (one key per line, as fsi-movie's scenario.json, or one object per line, as the
+# scenario files in assets/), printed as %g.
+study_json_value() {
+  awk -v object="\"$2\"" -v key="\"$3\"" '
+    index($0, object ":") { inside = 1 }
+    inside && index($0, key ":") {
+      s = substr($0, index($0, key ":") + length(key) + 1); sub(/^ */, "", s)
+      match(s, /^[-+0-9.eE]+/); printf "%g\n", substr(s, 1, RLENGTH) + 0; exit
+    }
+    inside && /}/ && !index($0, object) { inside = 0 }' "$1"
+}
+
 # study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).
 study_first_contact_time() {
   study_contacts "$1" | awk -F';' 'NF { split($1, a, "@"); print a[2] }'

@@ -3,7 +3,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <fsi/engine.hpp>
+#include <fsi/error.hpp>
 #include <fsi/output.hpp>
 #include <fsi/png.hpp>
 #include <memory>
@@ -27,6 +29,14 @@ namespace fs = std::filesystem;
 /// the scenario (it happens only after a failed step near a wall): stop instead of
 /// spending hours on it. Normal runs stay below 1e-2.
 constexpr double kLostBodyMassError = 0.5;
+
+/// The scenario the run uses, --set overrides applied, as JSON that loads again
+/// (fsi-movie scenario.json OUT2 repeats the run; the study scripts read its parameters).
+void write_effective_scenario(const Scenario& scenario, const fs::path& file) {
+  std::ofstream out(file, std::ios::trunc);
+  out << to_json(scenario) << '\n';
+  if (!out) throw InputError(file.string(), "", "cannot write the run's scenario");
+}
 
 class MovieRun {
  public:
@@ -54,6 +64,8 @@ class MovieRun {
     spec_.title = scenario.name;
     spec_.range = movie_color_range(scenario, spec_.quantity, engine_.view());
     summary_.add_output(options.out_dir / "functionals.csv");
+    write_effective_scenario(scenario, options.out_dir / "scenario.json");
+    summary_.add_output(options.out_dir / "scenario.json");
     if (options.png) fs::create_directories(options.out_dir / "frames");
     if (options.vtu) fs::create_directories(options.out_dir / "vtk");
 #ifdef FSI_RENDER_HAS_VIDEO

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fsi/output.hpp>
 #include <fsi/png.hpp>
+#include <fsi/scenario.hpp>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
@@ -114,8 +115,11 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.1, 1e-9);
   EXPECT_GT(summary["min_distance"]["distance_m"].get<double>(), 0.5);
   EXPECT_TRUE(summary["events"].is_array());
+  // The run's scenario is written out and loads again as the same physics and numerics.
+  EXPECT_EQ(fsi::fingerprint(fsi::load_scenario(out / "scenario.json")),
+            summary["scenario"]["fingerprint"].get<std::string>());
   const std::string outputs = summary["outputs"].dump();
-  for (const char* f : {"functionals.csv", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
+  for (const char* f : {"functionals.csv", "scenario.json", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
     EXPECT_NE(outputs.find(f), std::string::npos) << f;
   }
 }

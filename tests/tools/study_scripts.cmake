@@ -93,3 +93,14 @@ if(NOT _passed EQUAL 3)
   file(READ ${_dir}/rest.csv _rest)
   message(FATAL_ERROR "the static rest gaps are not within 3 % of the chapter's three (${_passed} are):\n${_rest}")
 endif()
+
+# study_json_value reads a number of one object in either layout of a scenario JSON.
+file(WRITE ${_dir}/pretty.json "{\n  \"fluid\": {\n    \"density_kgpm3\": 150.0,\n    \"viscosity_m2ps\": 0.001\n  },\n  \"solid\": {\n    \"density_kgpm3\": 1000.0\n  },\n  \"contact\": {\n    \"gamma_c\": 10000.0,\n    \"dist0_m\": 0.01\n  }\n}\n")
+file(WRITE ${_dir}/compact.json "{\n  \"solid\": {\"density_kgpm3\": 1000},\n  \"fluid\": {\"density_kgpm3\": 300},\n  \"contact\": {\"gamma_c\": 5e3, \"dist0_m\": 1e-2}\n}\n")
+execute_process(COMMAND ${BASH} -c "source '${SOURCE_DIR}/tools/study-common.sh' && for f in pretty compact; do \
+    printf '%s,%s,%s;' $(study_json_value ${_dir}/$f.json fluid density_kgpm3) \
+      $(study_json_value ${_dir}/$f.json contact gamma_c) $(study_json_value ${_dir}/$f.json solid density_kgpm3); done"
+  OUTPUT_VARIABLE _values RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0 OR NOT _values STREQUAL "150,10000,1000;300,5000,1000;")
+  message(FATAL_ERROR "study_json_value: got '${_values}' (exit ${_rc}), want '150,10000,1000;300,5000,1000;'")
+endif()
