@@ -54,6 +54,7 @@ class MovieRun {
       load_checkpoint(engine_, options_.resume_from);
       meter_ = ProgressMeter(engine_.state().time_s, scenario.numerics.end_time_s, options.quiet);
     }
+    if (earlier_) last_checkpoint_step_ = engine_.state().step;  // its checkpoint is in out_dir
     if (options.checkpoint_every > 0) fs::create_directories(options.out_dir / "checkpoints");
     const OutputSpec& out = scenario.output;
     spec_.width = out.width_px;
@@ -91,14 +92,20 @@ class MovieRun {
     const Scenario& s = engine_.scenario();
     const int frame_every = s.output.frame_every;
     write_frame();
+    // Whether the state the loop stops at is worth continuing from (checkpointed below).
+    bool resumable_stop = false;
     for (;;) {
       if (interrupt_requested()) {
         summary_.set_interrupted(true);
         summary_.set_stop_reason("interrupted by a signal");
+        resumable_stop = true;
         break;
       }
       // Half a step of slack: t accumulates rounding, t = end - 1e-16 is the end.
-      if (engine_.state().time_s >= s.numerics.end_time_s - 0.5 * s.numerics.time_step_s) break;
+      if (engine_.state().time_s >= s.numerics.end_time_s - 0.5 * s.numerics.time_step_s) {
+        resumable_stop = true;
+        break;
+      }
       const StepReport r = engine_.step();
       const State& st = engine_.state();
       summary_.record_step(r, st);
@@ -127,6 +134,10 @@ class MovieRun {
         write_checkpoint(st.step);
       meter_.update(st.time_s, st.step, summary_.unconverged_steps());
     }
+    // A killed study run then continues where it stopped instead of up to
+    // checkpoint_every steps (hours, for the stairs) earlier.
+    if (resumable_stop && options_.checkpoint_every > 0 && engine_.state().step != last_checkpoint_step_)
+      write_checkpoint(engine_.state().step);
     if (engine_.state().step != last_frame_step_) write_frame();  // the last state, always
     meter_.finish();
     finish_outputs();
@@ -160,6 +171,7 @@ class MovieRun {
     char name[48];
     std::snprintf(name, sizeof name, "step_%06ld.ckpt", step);
     save_checkpoint(engine_, options_.out_dir / "checkpoints" / name);
+    last_checkpoint_step_ = step;
   }
 
   bool video_active() const {
@@ -200,6 +212,7 @@ class MovieRun {
   std::optional<render::VideoWriter> video_;
 #endif
   long last_frame_step_ = -1;
+  long last_checkpoint_step_ = -1;
 };
 
 }  // namespace

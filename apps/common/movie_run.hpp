@@ -8,7 +8,7 @@
 ///   plot_{distance,height,velocity,mass}.png   the functionals over time
 ///   vtk/frame_<step>.vtu, vtk/frame_interface_<step>.vtp, vtk/frames.pvd
 ///   summary.json              see run_summary.hpp
-///   checkpoints/step_<step>.ckpt   with checkpoint_every > 0
+///   checkpoints/step_<step>.ckpt   with checkpoint_every > 0 (and of the last state)
 /// It stops early, cleanly (files closed, plots and summary written), on SIGINT/SIGTERM
 /// when the engine rejects a step, or when the body degenerates (mass error > 50%).
 #include <filesystem>
@@ -35,7 +35,10 @@ struct MovieOptions {
   /// Excludes resume_from.
   bool continue_run = false;
   /// Write checkpoints/step_<step>.ckpt every this many steps (0: never), so that a
-  /// long run can be resumed or a late event re-run from a nearby state.
+  /// long run can be resumed or a late event re-run from a nearby state. With it on,
+  /// the last state is checkpointed too when the run reaches its end time or is stopped
+  /// by a signal, so that --continue loses no steps (not after a rejected step or a
+  /// degenerated body: continuing from there would only fail again).
   long checkpoint_every = 0;
 };
 

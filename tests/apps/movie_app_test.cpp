@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fsi/output.hpp>
 #include <fsi/png.hpp>
@@ -133,7 +134,9 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
       << read_text(full.string() + ".log");
   EXPECT_TRUE(fs::exists(full / "checkpoints/step_000004.ckpt"));
   EXPECT_TRUE(fs::exists(full / "checkpoints/step_000008.ckpt"));
-  EXPECT_FALSE(fs::exists(full / "checkpoints/step_000010.ckpt"));
+  // The last state too (the end time falls between), for a --continue to a later end.
+  EXPECT_TRUE(fs::exists(full / "checkpoints/step_000010.ckpt"));
+  EXPECT_FALSE(fs::exists(full / "checkpoints/step_000009.ckpt"));
 
   args = {kScenario.string(), resumed.string(), "--resume",
           (full / "checkpoints/step_000004.ckpt").string()};
@@ -172,10 +175,12 @@ TEST(MovieApp, ContinuesAStoppedRunInItsFolder) {
   args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
   ASSERT_EQ(wait_exit_code(start_movie(args, straight.string() + ".log")), 0);
 
-  // Stopped after step 6 with a checkpoint at step 4 (steps 5 and 6 are done again).
+  // Stopped after step 6 with a checkpoint at step 4: the last state's checkpoint (step 6)
+  // is removed as if the process had been killed, so steps 5 and 6 are done again.
   args = {kScenario.string(), stopped.string(), "--end-time", "0.06", "--checkpoint-every", "4"};
   args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
   ASSERT_EQ(wait_exit_code(start_movie(args, stopped.string() + ".log")), 0);
+  ASSERT_TRUE(fs::remove(stopped / "checkpoints/step_000006.ckpt"));
   args = {kScenario.string(), stopped.string(), "--continue"};
   args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
   ASSERT_EQ(wait_exit_code(start_movie(args, stopped.string() + ".log")), 0)
@@ -212,6 +217,8 @@ TEST(MovieApp, ContinuesAStoppedRunInItsFolder) {
   ASSERT_EQ(wait_exit_code(start_movie(args, older.string() + ".log")), 0)
       << read_text(older.string() + ".log");
   EXPECT_EQ(read_lines(older / "functionals.csv"), read_lines(straight / "functionals.csv"));
+  EXPECT_EQ(nlohmann::json::parse(read_text(older / "summary.json"))["continued_from_step"], 6)
+      << "from the checkpoint of the first run's last state";
 
   // Without checkpoints there is nothing to continue from: a message, not a run.
   args = {kScenario.string(), straight.string(), "--continue", "--quiet"};
@@ -223,7 +230,8 @@ TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   const fs::path out = fresh_dir("interrupted");
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = start_movie({kScenario.string(), out.string(), "--end-time", "5",
-                                 "--frame-every", "2", "--size", "320x240", "--no-vtu"},
+                                 "--frame-every", "2", "--size", "320x240", "--no-vtu",
+                                 "--checkpoint-every", "100000"},
                                 out.string() + ".log");
   // The first frame's summary says the run is under way; then let it go on a little.
   while (!fs::exists(out / "summary.json") &&
@@ -242,6 +250,10 @@ TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   EXPECT_LT(steps, 500) << "stopped before the end time";
   EXPECT_EQ(read_lines(out / "functionals.csv").size(), std::size_t(steps) + 1);
   EXPECT_TRUE(fs::exists(out / "plot_distance.png"));
+  // The state it stopped at is checkpointed, so a --continue loses no steps.
+  char checkpoint[48];
+  std::snprintf(checkpoint, sizeof checkpoint, "checkpoints/step_%06ld.ckpt", steps);
+  EXPECT_TRUE(fs::exists(out / checkpoint)) << checkpoint;
 #ifdef FSI_RENDER_HAS_VIDEO
   // A frame every 2 steps, the initial one, and the last state's if it fell between.
   const long frames = fsi::render::probe_video(out / "movie.mp4").frames;
