@@ -1,15 +1,18 @@
-# Shared by tools/study-{materials,contact,stairs} (sourced, not run): checks the apps,
-# runs fsi-movie headless in parallel (skipping finished runs) and reads the events of
-# a run's summary.json.
+# Shared by tools/study-{materials,contact,stairs}, tools/contact-rest-distances and
+# tools/validate-example1 (sourced, not run): checks the apps, runs fsi-movie headless in
+# parallel (skipping finished runs) and reads the events of a run's summary.json.
 #
 # A run is one line "NAME SCENARIO [--set KEY=VALUE ...]"; its output goes to
-# $study_out/NAME/{functionals.csv,summary.json,log.txt}.
+# $study_out/NAME/{functionals.csv,summary.json,log.txt,study-settings.txt,wall_seconds.txt}.
 # FSI_MOVIE=path runs another fsi-movie (e.g. a copy, so that rebuilding the tree during
 # a long study does not swap the library under running processes). Every run uses the
 # failure policy halve_step: a step Newton cannot finish within its budget is retried
-# with k/2, k/4, k/8 before it is accepted and flagged. Checkpoints every 250 steps
-# ($study_out/NAME/checkpoints/) let a run be inspected, and a run that stopped before its
-# end goes on from the latest one when the study is started again (fsi-movie --continue).
+# with k/2, k/4, k/8 before it is accepted and flagged. Checkpoints every
+# $study_checkpoint_every steps ($study_out/NAME/checkpoints/, and of the last state when a
+# run ends or is stopped by a signal) let a run be inspected, and a run that stopped before
+# its end goes on from the latest one when the study is started again (fsi-movie
+# --continue), as does a finished run asked for a later end time.
+study_checkpoint_every=${study_checkpoint_every:-250}
 
 # fsi-movie stops a run whose body degenerated (relative mass error above this; the
 # kLostBodyMassError of apps/common/movie_run.cpp). That last row is not physics: the
@@ -45,46 +48,58 @@ study_common_option() {
   esac
 }
 
-# study_settings_match DIR: false (and says why) when DIR holds a run made with other
-# --set settings than this study's (study-settings.txt; none recorded = no settings).
+# study_run_settings [ARGS...]: the settings a run is made with, one per line: the
+# values of the --set options of its line, then the study's own (--set).
+study_run_settings() {
+  local previous=""
+  for a in "$@"; do [ "$previous" = --set ] && printf '%s\n' "$a"; previous=$a; done
+  printf '%s' "$study_sets_text"
+}
+
+# study_settings_match DIR [RUN ARGS...]: false (and says why) when DIR holds a run made
+# with other --set settings (study-settings.txt; none recorded = no settings) than a run
+# with these arguments gets in this study.
 study_settings_match() {
-  local dir=$1 have=""
+  local dir=$1 have="" want; shift
   [ -f "$dir/functionals.csv" ] || return 0
   [ -f "$dir/study-settings.txt" ] && have=$(cat "$dir/study-settings.txt")
-  [ "$have" = "${study_sets_text%$'\n'}" ] && return 0
-  echo "$dir was run with settings [${have//$'\n'/ }], this study has" \
-       "[${study_sets_text//$'\n'/ }]" >&2
+  want=$(study_run_settings "$@")
+  [ "$have" = "$want" ] && return 0
+  echo "$dir was run with settings [${have//$'\n'/ }], this study has [${want//$'\n'/ }]" >&2
   return 1
 }
 
 # study_run_one END_TIME NAME SCENARIO [--set ...]: one run unless it already finished.
+# wall_seconds.txt adds up the run time of the invocations that ended (a killed one
+# leaves no record).
 study_run_one() {
   local end_time=$1 name=$2 scenario=$3; shift 3
   local dir="$study_out/$name"
-  if study_run_finished "$dir"; then
+  if study_run_finished "$dir" "$end_time"; then
     echo "reusing $dir"; return 0
   fi
   mkdir -p "$dir"
-  printf '%s' "$study_sets_text" > "$dir/study-settings.txt"
+  study_run_settings "$@" > "$dir/study-settings.txt"
   local sets=() line
   while IFS= read -r line; do [ -n "$line" ] && sets+=(--set "$line"); done <<< "$study_sets_text"
   # A run that stopped (interrupted, killed, machine gone) goes on from its latest checkpoint.
-  local go_on=()
+  local go_on=() earlier=0
   if compgen -G "$dir/checkpoints/step_*.ckpt" > /dev/null && [ -f "$dir/functionals.csv" ]; then
     go_on=(--continue); echo "continuing $dir from $(ls "$dir"/checkpoints/step_*.ckpt | tail -1)"
+    earlier=$(cat "$dir/wall_seconds.txt" 2>/dev/null || echo 0)
   fi
-  local start=$SECONDS
-  if OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" "${go_on[@]}" \
-       --set /numerics/failure_policy='"halve_step"' "${sets[@]}" --end-time "$end_time" \
-       --checkpoint-every 250 --no-png --no-video --no-vtu --quiet > "$dir/log.txt" 2>&1; then
+  local start=$SECONDS rc=0
+  OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" "${go_on[@]}" \
+    --set /numerics/failure_policy='"halve_step"' "${sets[@]}" --end-time "$end_time" \
+    --checkpoint-every "$study_checkpoint_every" --no-png --no-video --no-vtu --quiet \
+    > "$dir/log.txt" 2>&1 || rc=$?
+  echo "$((earlier + SECONDS - start))" > "$dir/wall_seconds.txt"
+  if [ "$rc" = 0 ]; then
     echo "finished $dir in $((SECONDS - start)) s"
+  elif [ "$rc" = 130 ]; then
+    echo "stopped $dir (interrupted): start the study again to continue it from its latest checkpoint" >&2
   else
-    local rc=$?
-    if [ "$rc" = 130 ]; then
-      echo "stopped $dir (interrupted): start the study again to continue it from its latest checkpoint" >&2
-    else
-      echo "FAILED $dir (exit $rc, see $dir/log.txt)" >&2
-    fi
+    echo "FAILED $dir (exit $rc, see $dir/log.txt)" >&2
   fi
 }
 
@@ -93,14 +108,16 @@ study_run_one() {
 # (--summary-only) none: the summary then covers the runs that exist.
 study_run_all() {
   local jobs=$1 end_time=$2
-  export -f study_run_one study_run_finished; export study_out FSI_MOVIE study_sets_text
+  export -f study_run_one study_run_finished study_run_settings
+  export study_out FSI_MOVIE study_sets_text study_checkpoint_every
   if [ "${study_summary_only:-0}" = 1 ]; then cat > /dev/null; return 0; fi
-  local runs name refused=0
+  local runs name scenario args refused=0
   runs=$(awk -v only="${study_only:-}" 'BEGIN { n = split(only, o, ","); for (i = 1; i <= n; ++i) keep[o[i]] = 1 }
                                         n == 0 || ($1 in keep)')
   # A run directory is reused or continued only with the settings it was made with.
-  while read -r name _; do
-    [ -n "$name" ] && ! study_settings_match "$study_out/$name" && refused=1
+  while read -r name scenario args; do
+    # shellcheck disable=SC2086  # the run's arguments, split into words as xargs does below
+    [ -n "$name" ] && ! study_settings_match "$study_out/$name" $args && refused=1
   done <<< "$runs"
   if ((refused)); then
     echo "$0: REFUSED: use the same --set settings, --out DIR for another directory, or remove the run" >&2
@@ -127,11 +144,15 @@ study_contacts() {
        inside && /^ *}/ { inside = 0 }' "$1"
 }
 
-# study_run_finished DIR: the run in DIR ended (its final summary, not interrupted; a run
-# stopped early because the body degenerated counts as finished).
+# study_run_finished DIR [END_TIME]: the run in DIR ended (its final summary, not
+# interrupted) and, with END_TIME, reached it or stopped for a reason of its own (e.g. the
+# body degenerated): a finished run asked for a later end time is not finished.
 study_run_finished() {
   [ -f "$1/summary.json" ] && grep -q '"final": *true' "$1/summary.json" &&
-    ! grep -q '"interrupted": *true' "$1/summary.json"
+    ! grep -q '"interrupted": *true' "$1/summary.json" || return 1
+  [ -z "${2:-}" ] || ! grep -q '"stop_reason": *""' "$1/summary.json" ||
+    awk -v end="$2" -F: '/"simulated_time_s"/ { gsub(/[^0-9.eE+-]/, "", $2); ok = ($2 + 0 >= end - 1e-6) }
+                         END { exit !ok }' "$1/summary.json"
 }
 
 # study_stop_reason SUMMARY_JSON: why the run stopped before its end time (empty if it did not).

@@ -2,7 +2,8 @@
 #  - tools/study-bounce.awk on small hand-made CSVs (a real double bounce, the wiggle of a
 #    dimple's rim while the ball still approaches, a run that stopped while rising);
 #  - tools/study-common.sh's --set/--out: a run directory records its settings, is reused
-#    with the same ones and refused with others (a stub stands in for fsi-movie).
+#    with the same ones, continued to a later end time and refused with other settings
+#    (a stub stands in for fsi-movie); tools/validate-example1's rows likewise.
 # Inputs: -DSOURCE_DIR -DBINARY_DIR.
 find_program(AWK NAMES awk mawk gawk REQUIRED)
 find_program(BASH bash REQUIRED)
@@ -31,26 +32,32 @@ file(WRITE ${_dir}/rising.csv "${_head}0,0.1,-0.3,0\n1,0.001,-0.1,0\n2,0.003,0.1
 expect_bounce(rising.csv "3.000000e-03,,0.003")
 expect_bounce(rising.csv ",,0.003" -v stopped_early=1)
 
-# A stub fsi-movie: records its arguments, writes a finished run.
+# A stub fsi-movie: records its arguments, writes a run finished at its --end-time (with
+# a checkpoint, so that a later end time continues it).
 set(_stub ${_dir}/fake-fsi-movie)
 file(WRITE ${_stub} "#!/usr/bin/env bash
 dir=$2; printf '%s\\n' \"$@\" >> \"$dir/calls.txt\"
+end=0; previous=; for a in \"$@\"; do [ \"$previous\" = --end-time ] && end=$a; previous=$a; done
+mkdir -p \"$dir/checkpoints\"; : > \"$dir/checkpoints/step_000002.ckpt\"
 printf '${_head}0,0.1,-0.3,0\\n1,0.001,-0.1,0\\n2,0.02,0.2,0\\n' > \"$dir/functionals.csv\"
-printf '{\\n  \"final\": true,\\n  \"contact_sequence\": \"\"\\n}\\n' > \"$dir/summary.json\"
+printf '{\\n  \"final\": true,\\n  \"stop_reason\": \"\",\\n  \"simulated_time_s\": %s,\\n  \"contact_sequence\": \"\"\\n}\\n' \"$end\" > \"$dir/summary.json\"
 ")
 file(CHMOD ${_stub} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 set(_run d0_1e-2_g800)
-function(run_study want_rc)
+# run_tool(SCRIPT WANT_RC ARGS...): tools/SCRIPT with the stub, headless, 0.1 s.
+function(run_tool script want_rc)
   execute_process(COMMAND env FSI_STUDY_NO_BUILD=1 FSI_MOVIE=${_stub}
-      ${BASH} ${SOURCE_DIR}/tools/study-contact --jobs 1 --end-time 0.1 --only ${_run}
-      --out ${_dir}/study ${ARGN}
+      ${BASH} ${SOURCE_DIR}/tools/${script} --jobs 1 --end-time 0.1 ${ARGN}
     RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
-  message("study-contact ${ARGN} -> ${_rc}\n${_out}${_err}")
+  message("${script} ${ARGN} -> ${_rc}\n${_out}${_err}")
   if(NOT _rc EQUAL want_rc)
-    message(FATAL_ERROR "study-contact ${ARGN}: exit ${_rc}, want ${want_rc}")
+    message(FATAL_ERROR "${script} ${ARGN}: exit ${_rc}, want ${want_rc}")
   endif()
   set(_study_err "${_err}" PARENT_SCOPE)
 endfunction()
+macro(run_study want_rc)
+  run_tool(study-contact ${want_rc} --only ${_run} --out ${_dir}/study ${ARGN})
+endmacro()
 set(_calls ${_dir}/study/${_run}/calls.txt)
 run_study(0 --set /numerics/cut_snap=3e-2)
 file(STRINGS ${_calls} _args)
@@ -63,6 +70,20 @@ file(STRINGS ${_calls} _args_again)
 if(NOT _args_again STREQUAL _args)
   message(FATAL_ERROR "a finished run with the same settings was run again")
 endif()
+if(NOT EXISTS ${_dir}/study/${_run}/wall_seconds.txt)
+  message(FATAL_ERROR "the run's time was not recorded (wall_seconds.txt)")
+endif()
+# A later end time goes on from the finished run's last checkpoint.
+run_study(0 --set /numerics/cut_snap=3e-2 --end-time 0.2)
+file(STRINGS ${_calls} _args_later)
+list(LENGTH _args _n_before)
+list(SUBLIST _args_later ${_n_before} -1 _later_call)
+list(FIND _later_call --continue _continued)
+list(FIND _later_call 0.2 _later_end)
+if(_continued EQUAL -1 OR _later_end EQUAL -1)
+  message(FATAL_ERROR "a finished run asked for a later end time was not continued to it: ${_later_call}")
+endif()
+set(_args ${_args_later})
 run_study(3)  # other settings (none): refused, the run left as it was
 if(NOT _study_err MATCHES "cut_snap=3e-2.*REFUSED")
   message(FATAL_ERROR "a run made with other settings was not refused: ${_study_err}")
@@ -77,6 +98,25 @@ file(READ ${_dir}/study/summary.csv _summary)
 if(NOT _summary STREQUAL "dist0,gamma_c,real_contact_time,first_rebound_max,rest_distance\n")
   message(FATAL_ERROR "the summary of a study without settings holds a run made with some: ${_summary}")
 endif()
+
+# tools/validate-example1 makes its runs the same way: a row's own settings (mesh, time
+# step, 4225:1e-3's cut_snap) are passed and recorded, and --set on top is refused.
+macro(run_validate want_rc)
+  run_tool(validate-example1 ${want_rc} --only 4225:1e-3 --out ${_dir}/validate ${ARGN})
+endmacro()
+run_validate(0)
+file(STRINGS ${_dir}/validate/n4225_k1e-3/study-settings.txt _settings)
+if(NOT _settings STREQUAL "/mesh/refinements=0;/numerics/time_step_s=1e-3;/numerics/cut_snap=3e-2")
+  message(FATAL_ERROR "validate-example1 recorded the settings '${_settings}'")
+endif()
+file(STRINGS ${_dir}/validate/n4225_k1e-3/calls.txt _args)
+foreach(_want /mesh/refinements=0 /numerics/time_step_s=1e-3 /numerics/cut_snap=3e-2)
+  list(FIND _args ${_want} _found)
+  if(_found EQUAL -1)
+    message(FATAL_ERROR "validate-example1 did not pass --set ${_want}: ${_args}")
+  endif()
+endforeach()
+run_validate(3 --set /numerics/cavitation_pressure_pa=-3e4)
 
 # tools/contact-rest-distances: the static balance of the penalty force against the
 # ball's weight lands on the chapter's rest distances (3.18e-3, 1.77e-3, 1.21e-3 m) within 3 %.
