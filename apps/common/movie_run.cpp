@@ -62,6 +62,7 @@ class MovieRun {
     spec_.quantity = render::parse_quantity(out.field);
     spec_.show_mesh = out.mesh_overlay;
     spec_.window = options.zoom;
+    spec_.keep_aspect = !options.stretch;
     spec_.title = scenario.name;
     spec_.range = movie_color_range(scenario, spec_.quantity, engine_.view());
     summary_.add_output(options.out_dir / "functionals.csv");

@@ -23,6 +23,7 @@ struct MovieOptions {
   /// The picture: size, field, mesh overlay, frame rate and frame_every come from the
   /// scenario's output section (the app's options override it there).
   std::optional<render::ViewWindow> zoom;  ///< unset: the whole domain
+  bool stretch = false;  ///< the window fills the picture (x, y scaled apart)
   bool video = true;
   bool png = true;
   bool vtu = true;

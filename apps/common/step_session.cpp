@@ -18,7 +18,8 @@ constexpr const char* kOrigin = "<command>";
 
 constexpr const char* kCommands[] = {
     "step [N]",
-    "render FILE.png [field=vx|vy|vmag|p|umag] [zoom=x0,y0,x1,y1] [size=WxH] [mesh=0|1]",
+    "render FILE.png [field=vx|vy|vmag|p|umag] [zoom=x0,y0,x1,y1] [size=WxH] [mesh=0|1] "
+    "[stretch=0|1]",
     "functionals",
     "set KEY VALUE   (KEY: a /numerics key, e.g. time_step_s, newton_budget, failure_policy)",
     "numerics",
@@ -153,8 +154,12 @@ nlohmann::ordered_json StepSession::render(const std::vector<std::string>& words
       parse_size(value, kOrigin, "render size", spec.width, spec.height);
     } else if (key == "mesh") {
       spec.show_mesh = parse_int(value, 0, 1, kOrigin, "render mesh") == 1;
+    } else if (key == "stretch") {
+      // 1: the zoom window fills the picture (x and y scaled apart), e.g. for a 1 mm film.
+      spec.keep_aspect = parse_int(value, 0, 1, kOrigin, "render stretch") == 0;
     } else {
-      throw InputError(kOrigin, words[i], "unknown render option; field=, zoom=, size=, mesh=");
+      throw InputError(kOrigin, words[i],
+                       "unknown render option; field=, zoom=, size=, mesh=, stretch=");
     }
   }
   const FieldView view = engine_.view();
@@ -170,6 +175,7 @@ nlohmann::ordered_json StepSession::render(const std::vector<std::string>& words
   j["field"] = std::string(render::quantity_info(spec.quantity).name);
   j["width"] = spec.width;
   j["height"] = spec.height;
+  j["stretch"] = !spec.keep_aspect;
   j["range"] = {spec.range->lo, spec.range->hi};
   return j;
 }

@@ -28,6 +28,7 @@ set(_expect
   "ok|functionals"                               # functionals (saved below)
   "ok|file,field,width,height,range"             # render p
   "ok|file,range"                                # render zoom
+  "ok|file,stretch" "ok|file,stretch"            # render gap, kept aspect and stretched
   "ok|file"                                      # save
   "ok|converged_steps"                           # step 2
   "ok|file"                                      # load
@@ -40,6 +41,7 @@ set(_expect
   "error|/numerics/newton_budget"
   "error|field"
   "error|zoom"
+  "error|stretch"
   "error|no_such_checkpoint"
   "ok|bye")
 
@@ -92,7 +94,7 @@ foreach(_want IN LISTS _expect)
     endif()
   elseif(_answers EQUAL 9)
     string(JSON _functionals_before_save GET "${_line}" functionals)
-  elseif(_answers EQUAL 15)
+  elseif(_answers EQUAL 17)
     string(JSON _after GET "${_line}" functionals)
     if(NOT _after STREQUAL _functionals_before_save)
       message(FATAL_ERROR "load did not restore the saved state:\n${_functionals_before_save}\n${_after}")
@@ -103,7 +105,7 @@ if(NOT _rest STREQUAL "")
   message(FATAL_ERROR "answers after quit (or extra answers): ${_rest}")
 endif()
 
-foreach(_png step_frame.png step_zoom.png)
+foreach(_png step_frame.png step_zoom.png step_gap.png step_gap_stretched.png)
   if(NOT EXISTS ${_out}/${_png})
     message(FATAL_ERROR "render did not write ${_out}/${_png}")
   endif()
@@ -112,4 +114,11 @@ foreach(_png step_frame.png step_zoom.png)
     message(FATAL_ERROR "${_png} is not a PNG (${_magic})")
   endif()
 endforeach()
+# A 1 m x 5 cm window: letterboxed into a thin strip with the aspect kept, filling the
+# plot area when stretched, so the two pictures differ.
+file(SHA256 ${_out}/step_gap.png _kept)
+file(SHA256 ${_out}/step_gap_stretched.png _stretched)
+if(_kept STREQUAL _stretched)
+  message(FATAL_ERROR "render stretch=1 drew the same picture as with the aspect kept")
+endif()
 message("fsi-step session: ${_answers} answers as expected")

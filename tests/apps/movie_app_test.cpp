@@ -8,6 +8,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fsi/output.hpp>
 #include <fsi/png.hpp>
@@ -224,6 +225,37 @@ TEST(MovieApp, ContinuesAStoppedRunInItsFolder) {
   args = {kScenario.string(), straight.string(), "--continue", "--quiet"};
   EXPECT_EQ(wait_exit_code(start_movie(args, straight.string() + ".log2")), 2);
   EXPECT_NE(read_text(straight.string() + ".log2").find("checkpoint"), std::string::npos);
+}
+
+// Pixels of the picture's centre column that show the field (coloured, not the grey or
+// white around the plot area; |v| uses viridis, never grey).
+int coloured_pixels_in_centre_column(const fs::path& png) {
+  const fsi::render::Image image = fsi::render::read_png(png);
+  int n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    const std::uint8_t* px = &image.rgba[4 * (std::size_t(y) * image.width + image.width / 2)];
+    if (std::abs(int(px[0]) - int(px[1])) + std::abs(int(px[1]) - int(px[2])) > 40) ++n;
+  }
+  return n;
+}
+
+TEST(MovieApp, StretchLetsAThinZoomFillThePicture) {
+  // 1 m wide, 5 cm high: with the aspect kept a strip of a few pixels.
+  const fs::path kept = fresh_dir("zoom_kept"), stretched = fresh_dir("zoom_stretched");
+  std::vector<std::string> args{kScenario.string(), kept.string(), "--end-time", "0.01",
+                                "--zoom", "-0.5,-0.75,0.5,-0.7", "--field", "vmag",
+                                "--no-video", "--no-vtu", "--quiet"};
+  ASSERT_EQ(wait_exit_code(start_movie(args, kept.string() + ".log")), 0)
+      << read_text(kept.string() + ".log");
+  args[1] = stretched.string();
+  args.push_back("--stretch");
+  ASSERT_EQ(wait_exit_code(start_movie(args, stretched.string() + ".log")), 0)
+      << read_text(stretched.string() + ".log");
+  const int strip = coloured_pixels_in_centre_column(kept / "frames/frame_000000.png");
+  const int filled = coloured_pixels_in_centre_column(stretched / "frames/frame_000000.png");
+  EXPECT_GT(strip, 0);
+  EXPECT_LT(strip, 30);
+  EXPECT_GT(filled, 120) << "of 240 rows (the rest: title, axes)";
 }
 
 TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
