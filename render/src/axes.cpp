@@ -28,6 +28,17 @@ AxisTicks make_ticks(const AxisMap& map, float length_px, float spacing_px) {
     const double step = nice_step(map.lo, map.hi, target);
     for (double v : t.values) t.labels.push_back(format_tick(v, step));
   }
+  // An axis shorter than two spacings (a thin strip of a letterboxed zoom) still gets two
+  // or three nice ticks, whose labels would overlap: keep every 2nd, 4th, ... of them
+  // until neighbours are half a spacing apart (one label at least).
+  while (t.values.size() > 1 && std::abs(map(t.values[1]) - map(t.values[0])) < 0.5f * spacing_px) {
+    AxisTicks kept;
+    for (std::size_t i = 0; i < t.values.size(); i += 2) {
+      kept.values.push_back(t.values[i]);
+      kept.labels.push_back(t.labels[i]);
+    }
+    t = std::move(kept);
+  }
   return t;
 }
 

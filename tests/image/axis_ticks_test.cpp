@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fsi/axis_ticks.hpp>
 
+#include "../../render/src/axes.hpp"  // the frame axes' tick placement (internal)
+
 namespace fsi::render {
 namespace {
 
@@ -41,6 +43,21 @@ TEST(AxisTicks, LogTicks) {
   EXPECT_DOUBLE_EQ(d.front(), 1e-6);
   const std::vector<double> short_axis = log_ticks(0.08, 0.6, 6);
   EXPECT_GE(short_axis.size(), 3u);  // 0.1, 0.2, 0.5
+}
+
+TEST(AxisTicks, AShortAxisKeepsItsLabelsApart) {
+  // 5 cm of a letterboxed 1 m x 5 cm zoom drawn 12 px high, labels 35 px apart wanted:
+  // one label, not three on top of each other.
+  const detail::AxisMap short_axis{-0.75, -0.70, 112, 100};
+  const detail::AxisTicks few = detail::make_ticks(short_axis, 12, 35);
+  ASSERT_GE(few.values.size(), 1u);
+  for (std::size_t i = 1; i < few.values.size(); ++i) {
+    EXPECT_GE(std::abs(short_axis(few.values[i]) - short_axis(few.values[i - 1])), 17.5f);
+  }
+  EXPECT_EQ(few.labels.size(), few.values.size());
+  // A long axis keeps its ticks: 0..1 over 350 px, one per 35 px wanted.
+  const detail::AxisMap long_axis{0, 1, 350, 0};
+  EXPECT_GE(detail::make_ticks(long_axis, 350, 35).values.size(), 6u);
 }
 
 }  // namespace
