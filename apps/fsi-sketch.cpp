@@ -146,8 +146,8 @@ int main(int argc, char** argv) {
     a.spec.title = engine.scenario().name + ": " + std::to_string(view.nodes.size()) + " nodes";
     if (contours > 0) {
       char t[96];
-      std::snprintf(t, sizeof t, ", interface at %zu times from t = 0 to %.4g s", contours + 1, last_time_s);
-      a.spec.title += t;
+      std::snprintf(t, sizeof t, ": the ball at %zu times, t = 0 to %.4g s", contours + 1, last_time_s);
+      a.spec.title = engine.scenario().name + t;
     }
     fsi::render::Renderer renderer;
     fsi::render::write_png(a.out, renderer.render(view, a.spec));

@@ -23,7 +23,7 @@ study_apps_or_die() {
   [ -n "${FSI_STUDY_NO_BUILD:-}" ] || tools/build >/dev/null
   local app
   [ -n "${FSI_MOVIE:-}" ] && [ ! -x "$FSI_MOVIE" ] && { echo "$0: FSI_MOVIE=$FSI_MOVIE is not executable" >&2; exit 3; }
-  for app in fsi-movie fsi-plot; do
+  for app in fsi-movie fsi-plot fsi-sketch; do
     if [ ! -x "build/apps/$app" ]; then
       echo "$0: build/apps/$app is missing (apps/$app.cpp not in this tree or not built);" \
            "build it with tools/build first" >&2

@@ -198,10 +198,25 @@ Image draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec) 
     time_right = area.x0 + Canvas::text_width(buf, s);
   }
   if (!spec.title.empty()) {
-    // Centred over the plot area, unless that would run into the time stamp.
-    const float ts = s + 0.5f, tw = Canvas::text_width(spec.title, ts);
-    const float x = std::max((area.x0 + area.x1 - tw) / 2, time_right + 2.0f * ch);
-    c.text(spec.title, x, area.y0 - ch, ts, ink, Align::start, Align::end);
+    // Centred over the plot area, unless that would run into the time stamp. A title too
+    // long for the picture is drawn smaller (down to the labels' size), and if it still
+    // does not fit, cut with "..." rather than by the picture's edge.
+    const float x_min = time_right + 2.0f * ch, room = spec.width - pad - x_min;
+    std::string title = spec.title;
+    float ts = s + 0.5f, tw = Canvas::text_width(title, ts);
+    if (tw > room) {
+      ts = std::max(s, ts * room / tw);
+      tw = Canvas::text_width(title, ts);
+    }
+    if (tw > room) {
+      std::size_t keep = spec.title.size();
+      do {
+        title = spec.title.substr(0, --keep) + "...";
+        tw = Canvas::text_width(title, ts);
+      } while (tw > room && keep > 0);
+    }
+    const float x = std::max((area.x0 + area.x1 - tw) / 2, x_min);
+    c.text(title, x, area.y0 - ch, ts, ink, Align::start, Align::end);
   }
   return c.finish();
 }

@@ -141,5 +141,21 @@ TEST_F(FieldFrame, OutputHasRequestedSizeAndIsOpaque) {
   EXPECT_EQ(im.rgba[3], 255);
 }
 
+TEST_F(FieldFrame, ALongTitleStaysInsideThePicture) {
+  // Wider than the picture at the title's size: drawn smaller, so the last few columns
+  // of the title band stay background white instead of holding cut-off letters.
+  FrameSpec s = small_frame(Quantity::vmag);
+  s.show_colorbar = false;
+  s.title = "stairs_rho1000: the ball at 12 times, t = 0 to 11.5 s";
+  const Image im = renderer.render(view, s);
+  int inked = 0;
+  for (int y = 0; y < im.height / 6; ++y) {
+    for (int x = im.width - 4; x < im.width; ++x) {
+      if (im.rgba[4 * (std::size_t(y) * im.width + x)] < 200) ++inked;
+    }
+  }
+  EXPECT_EQ(inked, 0);
+}
+
 }  // namespace
 }  // namespace fsi::render
