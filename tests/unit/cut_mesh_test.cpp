@@ -119,4 +119,64 @@ TEST(CutMesh, CircleOnAFinerMeshKeepsAreaAndConformity) {
   for (const auto& [node, n] : count) EXPECT_EQ(n, 2) << "open interface at node " << node;
 }
 
+// Every interface node in exactly two segments: the polyline has no hole.
+void expect_closed(const CutMesh& cut) {
+  std::map<int, int> count;
+  for (const auto& s : cut.interface) {
+    ++count[s.node[0]];
+    ++count[s.node[1]];
+  }
+  EXPECT_FALSE(count.empty());
+  for (const auto& [node, n] : count) EXPECT_EQ(n, 2) << "open interface at node " << node;
+}
+
+double interface_length(const CutMesh& cut) {
+  double length = 0.0;
+  for (const auto& s : cut.interface) length += (s.b - s.a).norm();
+  return length;
+}
+
+TEST(CutMesh, AnInterfaceAlongPatchSidesIsInterfaceToo) {
+  // The square [0.25, 0.75]^2 on 4 x 4 patches of 0.25 m: the level set vanishes on whole
+  // patch sides, so no patch is cut; the sides between the solid and the fluid patches
+  // are the interface (its length 2 m, closed), not a hole in it.
+  const auto mesh = fsi::mesh::build_patch_mesh(
+      [] {
+        fsi::MeshSpec spec;
+        fsi::BlockSpec b;
+        b.x = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
+        b.y = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
+        spec.blocks = {b};
+        return spec;
+      }(),
+      {});
+  auto phi = [](const Vec2& x) { return std::max(std::abs(x.x() - 0.5), std::abs(x.y() - 0.5)) - 0.25; };
+  const CutMesh cut = fsi::fe::build_cut_mesh(mesh, phi);
+  for (PatchKind k : cut.kind) EXPECT_EQ(k, PatchKind::uncut);
+  EXPECT_NEAR(interface_length(cut), 2.0, 1e-12);
+  expect_closed(cut);
+  for (const auto& s : cut.interface) {
+    EXPECT_NEAR(phi(s.a), 0.0, 1e-12);
+    EXPECT_NEAR(phi(s.b), 0.0, 1e-12);
+    // Added from the solid side: its patch lies inside the square.
+    const Vec2 centre = mesh.nodes[mesh.patches[s.patch].node[4]];
+    EXPECT_LT(phi(centre), 0.0);
+  }
+}
+
+TEST(CutMesh, SnappingCutsToCornersKeepsTheInterfaceClosed) {
+  // A generous snap moves many cuts of a circle to corners; where both corners of a side
+  // are snapped the side carries the interface, so the polyline stays closed.
+  const auto mesh = unit_mesh(16);
+  const Vec2 centre(0.5123, 0.4871);
+  auto phi = [&](const Vec2& x) { return (x - centre).norm() - 0.3; };
+  for (double snap : {3e-2, 0.2, 0.45}) {
+    SCOPED_TRACE("snap " + std::to_string(snap));
+    const CutMesh cut = fsi::fe::build_cut_mesh(mesh, phi, fsi::fe::CutOptions{snap});
+    EXPECT_NEAR(total_area(cut), 1.0, 1e-13);
+    EXPECT_NEAR(interface_length(cut), 2 * std::numbers::pi * 0.3, 0.1);
+    expect_closed(cut);
+  }
+}
+
 }  // namespace

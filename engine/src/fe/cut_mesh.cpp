@@ -107,6 +107,39 @@ class PatchBuilder {
 
 Phase phase_of(int sign) { return sign < 0 ? Phase::solid : Phase::fluid; }
 
+/// Phase of patch p's sub-element that has the grid nodes n1 and n2 as vertices (a corner
+/// and the midpoint of one of its sides: every configuration has exactly one such).
+Phase phase_along(const CutMesh& cut, int p, int n1, int n2) {
+  for (int k = cut.first_element[p]; k < cut.first_element[p + 1]; ++k) {
+    const SubElement& e = cut.elements[k];
+    const auto end = e.node.begin() + e.vertices;
+    if (std::find(e.node.begin(), end, n1) != end && std::find(e.node.begin(), end, n2) != end) return e.phase;
+  }
+  assert(false && "no sub-element along the side");
+  return Phase::fluid;
+}
+
+/// 4. The interface along patch sides. Where the level set vanishes at both corners of a
+/// side (exactly, or snapped there by CutOptions::snap, common for a ball lying flat on
+/// thin rows by a wall) no patch is cut, yet the side parts solid from fluid: the two
+/// patches are uncut, one solid, one fluid. That side is interface too (two segments,
+/// corner - midpoint - corner), added once, from the solid patch, so that the contact
+/// force and the functionals see it like a cut; without it the interface has a hole.
+void add_interface_on_sides(const PatchMesh& mesh, CutMesh& cut) {
+  for (int p = 0; p < mesh.num_patches(); ++p) {
+    const Patch& patch = mesh.patches[p];
+    for (int side = 0; side < 4; ++side) {
+      const int q = patch.neighbor[side];
+      const int c0 = patch.node[kSideCorners[side][0]], c1 = patch.node[kSideCorners[side][1]];
+      const int mid = patch.node[kSideMidpoint[side]];
+      if (q < 0 || cut.corner_sign[c0] != 0 || cut.corner_sign[c1] != 0) continue;
+      if (phase_along(cut, p, c0, mid) != Phase::solid || phase_along(cut, q, c0, mid) != Phase::fluid) continue;
+      cut.interface.push_back(InterfaceSegment{cut.x[c0], cut.x[mid], p, {c0, mid}});
+      cut.interface.push_back(InterfaceSegment{cut.x[mid], cut.x[c1], p, {mid, c1}});
+    }
+  }
+}
+
 }  // namespace
 
 CutData cut_data(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& options) {
@@ -289,6 +322,7 @@ CutMesh build_cut_mesh(const PatchMesh& mesh, const CutData& data) {
     }
   }
   cut.first_element.push_back(cut.num_elements());
+  add_interface_on_sides(mesh, cut);
 
   cut.touches_solid.assign(n_nodes, 0);
   cut.touches_fluid.assign(n_nodes, 0);
