@@ -199,6 +199,30 @@ study_json_value() {
     inside && /}/ && !index($0, object) { inside = 0 }' "$1"
 }
 
+# study_walls JSON: the scenario's walls as "AX,AY,BX,BY;..." (tools/landings.awk's -v
+# walls), from either layout of a scenario JSON (the numbers of the "walls" array, four
+# per wall).
+study_walls() {
+  awk '!started { i = index($0, "\"walls\""); if (!i) next; started = 1; $0 = substr($0, i + 7) }
+       { for (k = 1; k <= length($0); ++k) {
+           ch = substr($0, k, 1)
+           if (ch == "[") ++depth
+           else if (ch == "]") { if (--depth == 0) { done = 1; break } }
+           else if (depth > 0 && ch ~ /[-+0-9.eE]/) num = num ch
+           if (depth > 0 && ch !~ /[-+0-9.eE]/ && num != "") { v[++n] = num + 0; num = "" }
+         }
+         if (done) exit }
+       END { for (k = 1; k + 3 <= n; k += 4) printf "%s%g,%g,%g,%g", (k > 1 ? ";" : ""), v[k], v[k+1], v[k+2], v[k+3]; print "" }' "$1"
+}
+
+# study_landings DIR JSON: the landings of the run in DIR (tools/landings.awk with the walls
+# and dist_0 of the scenario JSON) as "wall@time;wall@time...".
+study_landings() {
+  awk -f tools/landings.awk -v walls="$(study_walls "$2")" -v dist0="$(study_json_value "$2" contact dist0_m)" \
+      -v max_mass_error="$study_degenerate_mass_error" "$1/functionals.csv" |
+    awk -F, '{ printf "%s%s@%s", (NR > 1 ? ";" : ""), $1, $2 } END { print "" }'
+}
+
 # study_first_contact_time SUMMARY_JSON: time of the first real contact (empty if none).
 study_first_contact_time() {
   study_contacts "$1" | awk -F';' 'NF { split($1, a, "@"); print a[2] }'

@@ -32,6 +32,25 @@ file(WRITE ${_dir}/rising.csv "${_head}0,0.1,-0.3,0\n1,0.001,-0.1,0\n2,0.003,0.1
 expect_bounce(rising.csv "3.000000e-03,,0.003")
 expect_bounce(rising.csv ",,0.003" -v stopped_early=1)
 
+# tools/landings.awk: the ball over wall 1 (the lower of two floors) comes within dist0 =
+# 1e-2 (closest 5e-3 at t = 1), rises 3 cm (leaves), comes back (8e-3 at t = 3), hops only
+# 1.5 cm (< 2 dist0: the same landing, now over wall 0) and ends closest, 4e-3 at t = 5,
+# still within reach; the degenerated last row is skipped.
+file(WRITE ${_dir}/landings.csv "time_s,min_distance_m,centroid_x_m,centroid_y_m,mass_error
+0,0.05,0.5,1.05,0\n1,0.005,0.5,1.0,0\n2,0.03,0.5,1.03,0\n3,0.008,0.5,1.0,0\n4,0.015,0.5,1.8,0\n5,0.004,0.5,1.8,0\n6,0,0.5,9,1.9\n")
+execute_process(COMMAND ${AWK} -f ${SOURCE_DIR}/tools/landings.awk -v "walls=0,2,1,2;0,0.6,1,0.6" -v dist0=1e-2
+    ${_dir}/landings.csv
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+set(_want "1,1.0000,5.0000e-03,1.0000,2.0000,1\n0,5.0000,4.0000e-03,3.0000,,1>0\n")
+if(NOT _rc EQUAL 0 OR NOT _out STREQUAL _want)
+  message(FATAL_ERROR "landings.awk: got '${_out}' (exit ${_rc}, ${_err}), want '${_want}'")
+endif()
+execute_process(COMMAND ${AWK} -f ${SOURCE_DIR}/tools/landings.awk -v walls=0,1 -v dist0=1e-2 ${_dir}/landings.csv
+  RESULT_VARIABLE _rc ERROR_VARIABLE _err)
+if(_rc EQUAL 0 OR NOT _err MATCHES "wall 0 is not AX,AY,BX,BY")
+  message(FATAL_ERROR "landings.awk took a bad wall list: exit ${_rc}, ${_err}")
+endif()
+
 # A stub fsi-movie: records its arguments, writes a run finished at its --end-time (with
 # a checkpoint, so that a later end time continues it).
 set(_stub ${_dir}/fake-fsi-movie)
@@ -136,11 +155,19 @@ endif()
 
 # study_json_value reads a number of one object in either layout of a scenario JSON.
 file(WRITE ${_dir}/pretty.json "{\n  \"fluid\": {\n    \"density_kgpm3\": 150.0,\n    \"viscosity_m2ps\": 0.001\n  },\n  \"solid\": {\n    \"density_kgpm3\": 1000.0\n  },\n  \"contact\": {\n    \"gamma_c\": 10000.0,\n    \"dist0_m\": 0.01\n  }\n}\n")
-file(WRITE ${_dir}/compact.json "{\n  \"solid\": {\"density_kgpm3\": 1000},\n  \"fluid\": {\"density_kgpm3\": 300},\n  \"contact\": {\"gamma_c\": 5e3, \"dist0_m\": 1e-2}\n}\n")
+file(WRITE ${_dir}/compact.json "{\n  \"solid\": {\"density_kgpm3\": 1000},\n  \"walls\": [\n    [[0, 2.8], [0, 1.4]],\n    [[0, 1.4], [1.2, 1.0]]\n  ],\n  \"fluid\": {\"density_kgpm3\": 300},\n  \"contact\": {\"gamma_c\": 5e3, \"dist0_m\": 1e-2}\n}\n")
 execute_process(COMMAND ${BASH} -c "source '${SOURCE_DIR}/tools/study-common.sh' && for f in pretty compact; do \
     printf '%s,%s,%s;' $(study_json_value ${_dir}/$f.json fluid density_kgpm3) \
       $(study_json_value ${_dir}/$f.json contact gamma_c) $(study_json_value ${_dir}/$f.json solid density_kgpm3); done"
   OUTPUT_VARIABLE _values RESULT_VARIABLE _rc)
 if(NOT _rc EQUAL 0 OR NOT _values STREQUAL "150,10000,1000;300,5000,1000;")
   message(FATAL_ERROR "study_json_value: got '${_values}' (exit ${_rc}), want '150,10000,1000;300,5000,1000;'")
+endif()
+# study_walls reads the walls of either layout (fsi-movie's pretty scenario.json: one
+# number per line; the assets' compact one).
+file(WRITE ${_dir}/pretty_walls.json "{\n  \"walls\": [\n    [\n      [\n        0.0,\n        2.8\n      ],\n      [\n        0.0,\n        1.4\n      ]\n    ],\n    [\n      [\n        0.0,\n        1.4\n      ],\n      [\n        1.2,\n        1.0\n      ]\n    ]\n  ],\n  \"x\": [5, 6]\n}\n")
+execute_process(COMMAND ${BASH} -c "source '${SOURCE_DIR}/tools/study-common.sh' && study_walls ${_dir}/pretty_walls.json && study_walls ${_dir}/compact.json"
+  OUTPUT_VARIABLE _walls RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0 OR NOT _walls STREQUAL "0,2.8,0,1.4;0,1.4,1.2,1\n0,2.8,0,1.4;0,1.4,1.2,1\n")
+  message(FATAL_ERROR "study_walls: got '${_walls}' (exit ${_rc})")
 endif()
