@@ -77,10 +77,7 @@ Arguments parse_arguments(int argc, char** argv) {
   std::vector<std::string> positional;
   for (int i = 1; i < argc; ++i) {
     const std::string opt = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw fsi::InputError("command line", opt, "needs a value");
-      return argv[++i];
-    };
+    auto value = [&] { return fsi::app::option_value(i, argc, argv); };
     if (opt == "--size") {
       fsi::app::parse_size(value(), "command line", opt, a.spec.width, a.spec.height);
     } else if (opt == "--window") {

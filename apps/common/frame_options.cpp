@@ -70,4 +70,9 @@ void parse_size(const std::string& text, const std::string& origin, const std::s
   height = parse_int(text.substr(x + 1), 16, 8192, origin, option);
 }
 
+std::string option_value(int& i, int argc, char** argv) {
+  if (i + 1 >= argc) throw InputError("command line", argv[i], "needs a value");
+  return argv[++i];
+}
+
 }  // namespace fsi::app

@@ -24,6 +24,10 @@ void parse_size(const std::string& text, const std::string& origin, const std::s
 int parse_int(const std::string& text, long lo, long hi, const std::string& origin,
               const std::string& option);
 
+/// The value after option argv[i] (advancing i past it); throws
+/// fsi::InputError("command line", option, "needs a value") at the end of the line.
+std::string option_value(int& i, int argc, char** argv);
+
 /// A finite number, the whole text.
 double parse_number(const std::string& text, const std::string& origin, const std::string& option);
 
