@@ -3,11 +3,12 @@
 # parallel (skipping finished runs) and reads the events of a run's summary.json.
 #
 # A run is one line "NAME SCENARIO [--set KEY=VALUE ...]"; its output goes to
-# $study_out/NAME/{functionals.csv,summary.json,log.txt,study-settings.txt,wall_seconds.txt}.
+# $study_out/NAME/{functionals.csv,summary.json,log.txt,study-settings.txt,wall_seconds.txt}
+# (log.txt: fsi-movie's messages of every invocation, each after a "=== date" line).
 # FSI_MOVIE=path runs another fsi-movie (e.g. a copy, so that rebuilding the tree during
 # a long study does not swap the library under running processes). Every run uses the
-# failure policy halve_step: a step Newton cannot finish within its budget is retried
-# with k/2, k/4, k/8 before it is accepted and flagged. Checkpoints every
+# failure policy halve_step unless its line sets another: a step Newton cannot finish
+# within its budget is retried with k/2, k/4, k/8 before it is accepted and flagged. Checkpoints every
 # $study_checkpoint_every steps ($study_out/NAME/checkpoints/, and of the last state when a
 # run ends or is stopped by a signal) let a run be inspected, and a run that stopped before
 # its end goes on from the latest one when the study is started again (fsi-movie
@@ -83,16 +84,21 @@ study_run_one() {
   local sets=() line
   while IFS= read -r line; do [ -n "$line" ] && sets+=(--set "$line"); done <<< "$study_sets_text"
   # A run that stopped (interrupted, killed, machine gone) goes on from its latest checkpoint.
-  local go_on=() earlier=0
+  local go_on=() earlier=0 what="new run"
   if compgen -G "$dir/checkpoints/step_*.ckpt" > /dev/null && [ -f "$dir/functionals.csv" ]; then
-    go_on=(--continue); echo "continuing $dir from $(ls "$dir"/checkpoints/step_*.ckpt | tail -1)"
+    go_on=(--continue); what="continuing from $(ls "$dir"/checkpoints/step_*.ckpt | tail -1)"
+    echo "$what: $dir"
     earlier=$(cat "$dir/wall_seconds.txt" 2>/dev/null || echo 0)
   fi
   local start=$SECONDS rc=0
-  OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" "$@" "${go_on[@]}" \
-    --set /numerics/failure_policy='"halve_step"' "${sets[@]}" --end-time "$end_time" \
+  # log.txt keeps every invocation's messages (a continued run's earlier steps too).
+  printf '=== %s: %s\n' "$(date -u '+%Y-%m-%d %H:%M:%S UTC')" "$what" >> "$dir/log.txt"
+  # The study's default failure policy first: a run's own --set (e.g. another policy) and
+  # the study's --set come after it and win.
+  OPENBLAS_NUM_THREADS=1 "${FSI_MOVIE:-build/apps/fsi-movie}" "$scenario" "$dir" \
+    --set /numerics/failure_policy='"halve_step"' "$@" "${go_on[@]}" "${sets[@]}" --end-time "$end_time" \
     --checkpoint-every "$study_checkpoint_every" --no-png --no-video --no-vtu --quiet \
-    > "$dir/log.txt" 2>&1 || rc=$?
+    >> "$dir/log.txt" 2>&1 || rc=$?
   echo "$((earlier + SECONDS - start))" > "$dir/wall_seconds.txt"
   if [ "$rc" = 0 ]; then
     echo "finished $dir in $((SECONDS - start)) s"

@@ -87,3 +87,27 @@ TEST(SetNumerics, CheckpointsSavedAfterwardsCarryTheNewNumerics) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SetNumerics, ACheckpointGoesOnWithOtherSolverControls) {
+  // The Newton budget, tolerances and failure policy steer the solver, not the problem:
+  // a run may continue from its checkpoint with others (not so the physics, above).
+  const fsi::Scenario original = fsi::testing::coarse_example1();
+  fsi::Engine engine(original);
+  engine.step();
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "fsi_set_numerics_controls_test.ckpt";
+  fsi::save_checkpoint(engine, file);
+  fsi::Scenario controls = original;
+  controls.numerics.failure_policy = fsi::FailurePolicy::stop_and_rollback;
+  controls.numerics.newton_budget = original.numerics.newton_budget + 4;
+  controls.numerics.max_halvings = 1;
+  fsi::Engine continued(controls);
+  EXPECT_NO_THROW(fsi::load_checkpoint(continued, file));
+  EXPECT_TRUE(bit_identical(engine, continued));
+  EXPECT_TRUE(continued.step().accepted);
+  std::filesystem::remove(file);
+}
+
+}  // namespace

@@ -58,7 +58,7 @@ file(WRITE ${_stub} "#!/usr/bin/env bash
 dir=$2; printf '%s\\n' \"$@\" >> \"$dir/calls.txt\"
 end=0; previous=; for a in \"$@\"; do [ \"$previous\" = --end-time ] && end=$a; previous=$a; done
 mkdir -p \"$dir/checkpoints\"; : > \"$dir/checkpoints/step_000002.ckpt\"
-printf '${_head}0,0.1,-0.3,0\\n1,0.001,-0.1,0\\n2,0.02,0.2,0\\n' > \"$dir/functionals.csv\"
+printf 'step,time_s,min_distance_m,mean_vy_mps,mass_error,bottom_y_m,centroid_x_m,centroid_y_m,right_x_m\\n0,0,0.1,-0.3,0,1.9,0.5,2,0.6\\n1,0.05,0.001,-0.1,0,1.8,0.6,1.9,0.7\\n2,0.1,0.02,0.2,0,1.82,0.7,1.92,0.8\\n' > \"$dir/functionals.csv\"
 printf '{\\n  \"final\": true,\\n  \"stop_reason\": \"\",\\n  \"simulated_time_s\": %s,\\n  \"contact_sequence\": \"\"\\n}\\n' \"$end\" > \"$dir/summary.json\"
 ")
 file(CHMOD ${_stub} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
@@ -116,6 +116,21 @@ run_study(0 --summary-only)  # the summary leaves the run with other settings ou
 file(READ ${_dir}/study/summary.csv _summary)
 if(NOT _summary STREQUAL "dist0,gamma_c,real_contact_time,first_rebound_max,rest_distance\n")
   message(FATAL_ERROR "the summary of a study without settings holds a run made with some: ${_summary}")
+endif()
+
+# tools/study-stairs: a case's own policy (rho_f = 1000 keeps stalled full steps) comes
+# after the study's default halve_step, so it wins, and its run is summarized with it.
+run_tool(study-stairs 0 --only rho1000 --out ${_dir}/stairs)
+file(STRINGS ${_dir}/stairs/rho1000/calls.txt _args)
+list(FIND _args /numerics/failure_policy="halve_step" _default_at)
+list(FIND _args /numerics/failure_policy=accept_and_flag _own_at)
+if(_default_at EQUAL -1 OR _own_at LESS_EQUAL _default_at)
+  message(FATAL_ERROR "rho1000's accept_and_flag does not follow the default halve_step: ${_args}")
+endif()
+file(STRINGS ${_dir}/stairs/summary.csv _summary)
+list(LENGTH _summary _rows)
+if(NOT _rows EQUAL 2 OR _study_err MATCHES "left out")
+  message(FATAL_ERROR "study-stairs left its rho1000 run out of the summary: ${_summary} ${_study_err}")
 endif()
 
 # tools/validate-example1 makes its runs the same way: a row's own settings (mesh, time

@@ -114,7 +114,34 @@ TEST(Checkpoint, RefusesAnotherVersion) {
   expect_input_error([&] { fsi::io::read_checkpoint(file, "f"); },
                      {file.string(), "/version",
                       "format version " + std::to_string(fsi::io::kCheckpointVersion + 1),
-                      "reads version " + std::to_string(fsi::io::kCheckpointVersion)});
+                      "reads versions " + std::to_string(fsi::io::kOldestCheckpointVersion) + " to " +
+                          std::to_string(fsi::io::kCheckpointVersion)});
+}
+
+/// `bytes` with another format version and a checksum that fits.
+std::string with_version(std::string bytes, std::uint32_t version) {
+  for (int i = 0; i < 4; ++i) bytes[8 + i] = static_cast<char>((version >> (8 * i)) & 0xff);
+  bytes.resize(bytes.size() - 8);
+  const std::uint64_t sum = fsi::io::fnv1a(bytes.data(), bytes.size());
+  for (int i = 0; i < 8; ++i) bytes += static_cast<char>((sum >> (8 * i)) & 0xff);
+  return bytes;
+}
+
+TEST(Checkpoint, AFormat3FileIsCheckedAgainstTheFormat3Fingerprint) {
+  // Format 3 fingerprints covered the solver controls; the file's layout is today's.
+  const fs::path file = temp_file("v3.ckpt");
+  fsi::io::write_checkpoint(file, sample_state(), "aaaaaaaaaaaaaaaa");
+  const std::string v4 = fsi::test::read_file(file);
+  EXPECT_NO_THROW(fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa", "cccccccccccccccc"));
+  write_bytes(file, with_version(v4, 3));
+  EXPECT_EQ(fsi::io::read_checkpoint(file, "bbbbbbbbbbbbbbbb", "aaaaaaaaaaaaaaaa").step, sample_state().step);
+  EXPECT_NO_THROW(fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa"));  // no format 3 one given
+  expect_input_error([&] { fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa", "cccccccccccccccc"); },
+                     {file.string(), "/fingerprint", "format 3", "this engine runs cccccccccccccccc",
+                      "solver controls"});
+  write_bytes(file, with_version(v4, 2));
+  expect_input_error([&] { fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa", "aaaaaaaaaaaaaaaa"); },
+                     {"/version", "format version 2"});
 }
 
 TEST(Checkpoint, RefusesTruncatedAndCorruptFiles) {

@@ -79,7 +79,8 @@ class Engine {
 /// Writes the state with a format version and the scenario fingerprint.
 void save_checkpoint(const Engine& engine, const std::filesystem::path& file);
 /// Restores a checkpoint into an engine; throws InputError if the checkpoint belongs
-/// to another scenario or format version.
+/// to another scenario (physics or discretization: the solver controls -- Newton budget,
+/// tolerances, failure policy -- may differ) or format version.
 void load_checkpoint(Engine& engine, const std::filesystem::path& file);
 
 }  // namespace fsi

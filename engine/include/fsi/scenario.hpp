@@ -168,7 +168,9 @@ Scenario parse_scenario(const std::string& json_text, const std::string& origin)
 /// The scenario as JSON (round-trips through parse_scenario).
 std::string to_json(const Scenario& scenario);
 /// A stable fingerprint of the scenario's physics and numerics (for checkpoints): 16 hex
-/// digits of a 64-bit FNV-1a hash of the canonical JSON without name, source and output.
+/// digits of a 64-bit FNV-1a hash of the canonical JSON without name, source, output,
+/// end time and the solver controls (newton_*, reuse_contraction, failure_policy,
+/// max_halvings), which do not change the problem a state belongs to.
 std::string fingerprint(const Scenario& scenario);
 
 }  // namespace fsi

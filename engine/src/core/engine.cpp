@@ -14,8 +14,9 @@
 #include "fe/point_locator.hpp"
 #include "fsi/error.hpp"
 #include "interface/body.hpp"
-#include "io/checkpoint.hpp"
 #include "interface/step_mapping.hpp"
+#include "io/checkpoint.hpp"
+#include "io/fingerprint.hpp"
 #include "mesh/patch_mesh.hpp"
 #include "solve/newton.hpp"
 
@@ -327,7 +328,8 @@ void save_checkpoint(const Engine& engine, const std::filesystem::path& file) {
 }
 
 void load_checkpoint(Engine& engine, const std::filesystem::path& file) {
-  const State state = io::read_checkpoint(file, fingerprint(engine.scenario()));
+  const State state =
+      io::read_checkpoint(file, fingerprint(engine.scenario()), io::fingerprint_v3(engine.scenario()));
   try {
     engine.set_state(state);
   } catch (const InputError& e) {

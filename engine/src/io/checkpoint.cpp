@@ -176,7 +176,8 @@ void write_checkpoint(const std::filesystem::path& file, const State& state,
   write_file_atomically(file, w.bytes);
 }
 
-State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint) {
+State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint,
+                      const std::string& expected_v3_fingerprint) {
   const std::string name = file.string();
   const std::string bytes = read_bounded_file(file, kMaxCheckpointBytes, "checkpoint");
 
@@ -187,11 +188,11 @@ State read_checkpoint(const std::filesystem::path& file, const std::string& expe
   Reader head(bytes, name);
   head.raw(kMagic.size(), "magic");
   const std::uint32_t version = head.u32("version");
-  if (version != kCheckpointVersion) {
+  if (version < kOldestCheckpointVersion || version > kCheckpointVersion) {
     throw InputError(name, "/version",
                      "checkpoint format version " + std::to_string(version) +
-                         ", this engine reads version " + std::to_string(kCheckpointVersion) +
-                         " only");
+                         ", this engine reads versions " + std::to_string(kOldestCheckpointVersion) +
+                         " to " + std::to_string(kCheckpointVersion));
   }
   // The checksum covers everything, so check it before trusting any count or value.
   if (bytes.size() < head.offset() + 8) {
@@ -215,10 +216,15 @@ State read_checkpoint(const std::filesystem::path& file, const std::string& expe
                          std::to_string(kMaxFingerprintBytes) + " allowed");
   }
   const std::string found = r.raw(length, "fingerprint");
-  if (found != expected_fingerprint) {
+  const std::string& expected =
+      version == 3 && !expected_v3_fingerprint.empty() ? expected_v3_fingerprint : expected_fingerprint;
+  if (found != expected) {
     throw InputError(name, "/fingerprint",
-                     "checkpoint belongs to scenario fingerprint " + found + ", this engine runs " +
-                         expected_fingerprint);
+                     "checkpoint (format " + std::to_string(version) + ") belongs to scenario fingerprint " +
+                         found + ", this engine runs " + expected +
+                         (version == 3 ? " (format 3 fingerprints cover the solver controls too: "
+                                         "load it with the numerics it was written with)"
+                                       : ""));
   }
 
   State state;

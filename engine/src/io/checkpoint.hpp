@@ -22,8 +22,11 @@ namespace fsi::io {
 
 /// Bump when the layout or the meaning of a stored field changes (3: the scenario
 /// fingerprint leaves out the end time and covers contact.min_dist_fraction and
-/// numerics.cip_transient_weight).
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+/// numerics.cip_transient_weight; 4: the fingerprint leaves out the solver controls,
+/// io/fingerprint.hpp -- the layout is that of 3).
+inline constexpr std::uint32_t kCheckpointVersion = 4;
+/// The oldest version read: a version 3 file is the same layout with the older fingerprint.
+inline constexpr std::uint32_t kOldestCheckpointVersion = 3;
 
 /// Writes `state` to `file` atomically (a temporary file in the same folder, then a
 /// rename): a crash mid-write leaves the previous checkpoint intact. Throws InputError if
@@ -31,9 +34,12 @@ inline constexpr std::uint32_t kCheckpointVersion = 3;
 void write_checkpoint(const std::filesystem::path& file, const State& state,
                       const std::string& scenario_fingerprint);
 
-/// Reads a checkpoint written for the scenario with `expected_fingerprint`. Throws
-/// InputError naming the file and what is wrong: not a checkpoint, another format
-/// version, corrupt or truncated, or written by another scenario.
-State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint);
+/// Reads a checkpoint written for the scenario with `expected_fingerprint` (a version 3
+/// file: with `expected_v3_fingerprint`, io::fingerprint_v3 of the same scenario; empty:
+/// the same as `expected_fingerprint`). Throws InputError naming the file and what is
+/// wrong: not a checkpoint, another format version, corrupt or truncated, or written by
+/// another scenario.
+State read_checkpoint(const std::filesystem::path& file, const std::string& expected_fingerprint,
+                      const std::string& expected_v3_fingerprint = "");
 
 }  // namespace fsi::io

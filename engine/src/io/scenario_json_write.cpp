@@ -4,6 +4,7 @@
 #include <string>
 
 #include "fsi/scenario.hpp"
+#include "io/fingerprint.hpp"
 #include "io/fnv1a.hpp"
 #include "io/scenario_schema.hpp"
 
@@ -82,7 +83,12 @@ std::string to_json(const Scenario& scenario) {
   return writer.object.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
-std::string fingerprint(const Scenario& scenario) {
+namespace io {
+namespace {
+
+/// The canonical JSON of a checkpoint format 3 fingerprint: every field except those
+/// that do not change any step.
+nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   io::JsonWriter<nlohmann::json> writer;  // sorted keys: independent of member order
   io::visit_fields(writer, scenario);
   // The name, the output settings and the end time do not change any step: a finished
@@ -98,11 +104,30 @@ std::string fingerprint(const Scenario& scenario) {
   if (scenario.numerics.cut_snap == defaults.cut_snap) writer.object["numerics"].erase("cut_snap");
   if (scenario.numerics.cavitation_pressure_pa == defaults.cavitation_pressure_pa)
     writer.object["numerics"].erase("cavitation_pressure_pa");
-  const std::string canonical =
-      writer.object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return std::move(writer.object);
+}
+
+std::string hash_hex(const nlohmann::json& object) {
+  const std::string canonical = object.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(io::fnv1a(canonical)));
   return hex;
+}
+
+}  // namespace
+
+std::string fingerprint_v3(const Scenario& scenario) { return hash_hex(fingerprint_object_v3(scenario)); }
+
+}  // namespace io
+
+std::string fingerprint(const Scenario& scenario) {
+  nlohmann::json object = io::fingerprint_object_v3(scenario);
+  // Since checkpoint version 4 the solver controls are left out too: they decide how hard
+  // Newton tries and what happens when it fails, not the discrete problem a state belongs
+  // to, so a run may go on from its checkpoint with another budget or failure policy
+  // (the rho_f = 1000 stairs run, docs/solver.md).
+  for (const char* key : io::kSolverControlKeys) object["numerics"].erase(key);
+  return io::hash_hex(object);
 }
 
 }  // namespace fsi
