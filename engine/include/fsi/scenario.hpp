@@ -80,13 +80,6 @@ struct NumericsSpec {
   double reuse_contraction = 0.2;
   FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
   int max_halvings = 3;
-  /// Steps that stay at a reduced time step (ours; 0: the next step tries k again). After a
-  /// step accepted at k_r < k (halve_step's retries), the following steps keep k_r, and it
-  /// doubles back towards k only at step numbers divisible by recovery_steps. A state right
-  /// after a difficult step (a cut change in thin rows) often needs several short steps, and
-  /// k at once derails it again (docs/solver.md, "Over tread 1's edge"). Only the step
-  /// number and the last step's k decide: checkpoints continue bit for bit.
-  int recovery_steps = 0;
 
   double cip_gamma = 0.05;        ///< gamma of S_aniso (scaled by 1/(rho_f nu_f))
   /// Weight w of the transient term in the CIP scaling gamma h^2 / (rho_f nu_f + w rho_f h^2 / k)
@@ -177,7 +170,7 @@ std::string to_json(const Scenario& scenario);
 /// A stable fingerprint of the scenario's physics and numerics (for checkpoints): 16 hex
 /// digits of a 64-bit FNV-1a hash of the canonical JSON without name, source, output,
 /// end time and the solver controls (newton_*, reuse_contraction, failure_policy,
-/// max_halvings, recovery_steps), which do not change the problem a state belongs to.
+/// max_halvings), which do not change the problem a state belongs to.
 std::string fingerprint(const Scenario& scenario);
 
 }  // namespace fsi

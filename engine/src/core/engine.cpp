@@ -3,7 +3,6 @@
 // Newton on the monolithic system -> functionals -> report.
 #include "fsi/engine.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -219,22 +218,9 @@ struct Engine::Impl {
     }
   }
 
-  /// The step to try first: the scenario's k, or (recovery_steps > 0) the reduced k the
-  /// last step was accepted at, doubled back only at step numbers divisible by
-  /// recovery_steps.
-  double first_time_step() const {
-    const double k = scenario.numerics.time_step_s;
-    const int every = scenario.numerics.recovery_steps;
-    const double last = state.time_step_s;
-    if (every <= 0 || !(last > 0.0) || !(last < k)) return k;
-    return state.step % every == 0 ? std::min(k, 2.0 * last) : last;
-  }
-
   StepReport step() {
     StepReport report;
-    double k = first_time_step();
-    // No retry below the scenario's k / 2^max_halvings, however low a recovery started.
-    const double k_min = std::ldexp(scenario.numerics.time_step_s, -scenario.numerics.max_halvings);
+    double k = scenario.numerics.time_step_s;
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
     // start) is kept: when every halving fails too, that one is accepted and flagged,
@@ -258,7 +244,7 @@ struct Engine::Impl {
           best_x = x;
           best_k = k;
         }
-        if (attempt_no < scenario.numerics.max_halvings && 0.5 * k >= k_min * (1.0 - 1e-12)) {
+        if (attempt_no < scenario.numerics.max_halvings) {
           k *= 0.5;
           report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
                                    "Newton did not converge: retrying with k = " + std::to_string(k)});

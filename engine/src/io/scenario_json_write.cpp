@@ -96,7 +96,6 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   writer.object.erase("name");
   writer.object.erase("output");
   writer.object["numerics"].erase("end_time_s");
-  writer.object["numerics"].erase("recovery_steps");  // added with format 4 (a solver control)
   // Numerics added after checkpoint version 3 count only when set: at their default every
   // step is the same as before they existed, so older checkpoints stay loadable.
   const NumericsSpec defaults;
