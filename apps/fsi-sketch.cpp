@@ -10,8 +10,10 @@
 // --contours takes checkpoint files or folders of them (every step_*.ckpt in it, in step
 // order); --every N keeps every N-th of them (the last one always). The checkpoints must
 // belong to the scenario: pass the run's own OUTDIR/scenario.json (fsi-movie writes it with
-// its --set changes) or the same --set changes. Prints the node and patch counts and the
-// contours' times. Exit 0 on success, 2 on bad input.
+// its --set changes) or the same --set changes. A checkpoint written before
+// tools/rewind-run changed the run's numerics belongs to OUTDIR/rewound-*/scenario.json
+// (the run's scenario as it was then), which is tried next. Prints the node and patch
+// counts and the contours' times. Exit 0 on success, 2 on bad input.
 //
 // Examples:
 //   fsi-sketch assets/scenarios/stairs/stairs_rho1000.json assets/scenarios/stairs/stairs_sketch.png
@@ -26,6 +28,7 @@
 #include <fsi/png.hpp>
 #include <fsi/renderer.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "frame_options.hpp"
@@ -106,6 +109,44 @@ Arguments parse_arguments(int argc, char** argv) {
   return a;
 }
 
+/// The scenarios a run had before tools/rewind-run changed its numerics
+/// (RUN/rewound-*/scenario.json, oldest first), RUN being the folder of `checkpoints/`.
+std::vector<fs::path> earlier_scenarios(const fs::path& checkpoint) {
+  std::vector<fs::path> found;
+  const fs::path run = checkpoint.parent_path().parent_path();
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(run.empty() ? "." : run, ec)) {
+    const fs::path candidate = e.path() / "scenario.json";
+    if (e.path().filename().string().rfind("rewound-", 0) == 0 && fs::exists(candidate))
+      found.push_back(candidate);
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+/// Loads `file` into `engine` (the scenario given) or, when the checkpoint was written
+/// with the numerics the run had before a rewind, into an engine of that scenario (kept
+/// in `earlier`, made once). Returns the engine that holds it.
+const fsi::Engine& load_contour(fsi::Engine& engine, const fs::path& file,
+                                std::vector<std::pair<fs::path, fsi::Engine>>& earlier) {
+  try {
+    fsi::load_checkpoint(engine, file);
+    return engine;
+  } catch (const fsi::InputError& e) {
+    if (std::string(e.what()).find("fingerprint") == std::string::npos) throw;
+    for (const fs::path& scenario : earlier_scenarios(file)) {
+      auto it = std::find_if(earlier.begin(), earlier.end(), [&](const auto& p) { return p.first == scenario; });
+      if (it == earlier.end()) it = earlier.emplace(earlier.end(), scenario, fsi::Engine(fsi::load_scenario(scenario)));
+      try {
+        fsi::load_checkpoint(it->second, file);
+        return it->second;
+      } catch (const fsi::InputError&) {
+      }
+    }
+    throw;  // the first error: the checkpoint belongs to none of them
+  }
+}
+
 // Every `every`-th file and the last one.
 std::vector<fs::path> thinned(const std::vector<fs::path>& files, int every) {
   std::vector<fs::path> kept;
@@ -127,9 +168,9 @@ int main(int argc, char** argv) {
     if (!a.contours.empty()) {
       // The t = 0 picture with every checkpoint's interface added to the initial one.
       times = "0";
+      std::vector<std::pair<fs::path, fsi::Engine>> earlier;  // scenarios before rewinds
       for (const fs::path& f : thinned(a.contours, a.every)) {
-        fsi::load_checkpoint(engine, f);
-        const fsi::FieldView at = engine.view();
+        const fsi::FieldView at = load_contour(engine, f, earlier).view();
         view.interface.insert(view.interface.end(), at.interface.begin(), at.interface.end());
         char t[32];
         std::snprintf(t, sizeof t, ", %.4g", at.time_s);

@@ -1,7 +1,8 @@
 # tools/rewind-run: a tiny drop run (fsi-movie, checkpoints every 2 steps) rewound to step 4
 # with a halved time step goes on from there with --continue at that step; bad requests
-# (physics keys, a missing checkpoint, a value fsi-step refuses) change nothing.
-# Inputs: -DMOVIE -DSTEP -DSOURCE_DIR -DBINARY_DIR.
+# (physics keys, a missing checkpoint, a value fsi-step refuses) change nothing; fsi-sketch
+# draws checkpoints from before and after the rewind.
+# Inputs: -DMOVIE -DSTEP -DSKETCH -DSOURCE_DIR -DBINARY_DIR.
 set(_dir ${BINARY_DIR}/test_tmp/rewind_run)
 file(REMOVE_RECURSE ${_dir})
 file(MAKE_DIRECTORY ${_dir})
@@ -77,4 +78,12 @@ list(GET _last 0 _last_step)
 list(GET _last 1 _last_time)
 if(NOT _last_step EQUAL 8 OR _last_time LESS 0.0599 OR _last_time GREATER 0.0601)
   message(FATAL_ERROR "after the rewind: last row step ${_last_step} at t = ${_last_time}, want step 8 at 0.06")
+endif()
+
+# fsi-sketch draws the whole run: step 2 was written with the old time step and belongs to
+# the scenario kept in rewound-*/scenario.json, the others to the run's scenario.json.
+execute_process(COMMAND ${SKETCH} ${_run}/scenario.json ${_dir}/contours.png --size 320x240
+    --contours ${_run}/checkpoints RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+if(NOT _rc EQUAL 0 OR NOT _out MATCHES "contours at t = 0, 0.02, 0.04, 0.05, 0.06 ")
+  message(FATAL_ERROR "fsi-sketch of the rewound run: exit ${_rc}: ${_out}${_err}")
 endif()
