@@ -133,7 +133,7 @@ const fsi::Engine& load_contour(fsi::Engine& engine, const fs::path& file,
     fsi::load_checkpoint(engine, file);
     return engine;
   } catch (const fsi::InputError& e) {
-    if (std::string(e.what()).find("fingerprint") == std::string::npos) throw;
+    if (e.key() != "/fingerprint") throw;  // not a question of the scenario
     for (const fs::path& scenario : earlier_scenarios(file)) {
       auto it = std::find_if(earlier.begin(), earlier.end(), [&](const auto& p) { return p.first == scenario; });
       if (it == earlier.end()) it = earlier.emplace(earlier.end(), scenario, fsi::Engine(fsi::load_scenario(scenario)));
