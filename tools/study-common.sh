@@ -57,15 +57,22 @@ study_run_settings() {
   printf '%s' "$study_sets_text"
 }
 
+# study_physics_settings: the settings on stdin without the solver controls (Newton's
+# budget and tolerances, the failure policy: engine/src/io/fingerprint.hpp's
+# kSolverControlKeys). A run may go on with other solver controls, as its checkpoints do.
+study_physics_settings() {
+  grep -v -E '^/numerics/(newton_budget|newton_rel_tol|newton_abs_tol|reuse_contraction|failure_policy|max_halvings|accept_flagged_reduction)=' || true
+}
+
 # study_settings_match DIR [RUN ARGS...]: false (and says why) when DIR holds a run made
 # with other --set settings (study-settings.txt; none recorded = no settings) than a run
-# with these arguments gets in this study.
+# with these arguments gets in this study. Solver controls may differ (study_physics_settings).
 study_settings_match() {
   local dir=$1 have="" want; shift
   [ -f "$dir/functionals.csv" ] || return 0
   [ -f "$dir/study-settings.txt" ] && have=$(cat "$dir/study-settings.txt")
   want=$(study_run_settings "$@")
-  [ "$have" = "$want" ] && return 0
+  [ "$(study_physics_settings <<< "$have")" = "$(study_physics_settings <<< "$want")" ] && return 0
   echo "$dir was run with settings [${have//$'\n'/ }], this study has [${want//$'\n'/ }]" >&2
   return 1
 }
@@ -114,7 +121,7 @@ study_run_one() {
 # (--summary-only) none: the summary then covers the runs that exist.
 study_run_all() {
   local jobs=$1 end_time=$2
-  export -f study_run_one study_run_finished study_run_settings
+  export -f study_run_one study_run_finished study_run_settings study_physics_settings
   export study_out FSI_MOVIE study_sets_text study_checkpoint_every
   if [ "${study_summary_only:-0}" = 1 ]; then cat > /dev/null; return 0; fi
   local runs name scenario args refused=0

@@ -118,20 +118,31 @@ if(NOT _summary STREQUAL "dist0,gamma_c,real_contact_time,first_rebound_max,rest
   message(FATAL_ERROR "the summary of a study without settings holds a run made with some: ${_summary}")
 endif()
 
-# tools/study-stairs: a case's own policy (rho_f = 1000 keeps stalled full steps) comes
-# after the study's default halve_step, so it wins, and its run is summarized with it.
+# tools/study-stairs: the cases' own solver control (accept_flagged_reduction) comes after
+# the study's default halve_step, and a run recorded with other solver controls (rho_f =
+# 1000 ran with accept_and_flag before session 12) goes on with the new ones, is not
+# refused and stays in the summary: solver controls do not change the problem.
+file(MAKE_DIRECTORY ${_dir}/stairs/rho1000)
+file(WRITE ${_dir}/stairs/rho1000/study-settings.txt "/numerics/failure_policy=accept_and_flag\n")
+file(WRITE ${_dir}/stairs/rho1000/functionals.csv "step,time_s\n0,0\n")
 run_tool(study-stairs 0 --only rho1000 --out ${_dir}/stairs)
 file(STRINGS ${_dir}/stairs/rho1000/calls.txt _args)
 list(FIND _args /numerics/failure_policy="halve_step" _default_at)
-list(FIND _args /numerics/failure_policy=accept_and_flag _own_at)
+list(FIND _args /numerics/accept_flagged_reduction=1e-4 _own_at)
 if(_default_at EQUAL -1 OR _own_at LESS_EQUAL _default_at)
-  message(FATAL_ERROR "rho1000's accept_and_flag does not follow the default halve_step: ${_args}")
+  message(FATAL_ERROR "rho1000's accept_flagged_reduction does not follow the default halve_step: ${_args}")
+endif()
+if(_study_err MATCHES "REFUSED")
+  message(FATAL_ERROR "a run made with other solver controls was refused: ${_study_err}")
 endif()
 file(STRINGS ${_dir}/stairs/summary.csv _summary)
 list(LENGTH _summary _rows)
 if(NOT _rows EQUAL 2 OR _study_err MATCHES "left out")
   message(FATAL_ERROR "study-stairs left its rho1000 run out of the summary: ${_summary} ${_study_err}")
 endif()
+# Physics settings still count: a run recorded with another cut_snap is refused.
+file(WRITE ${_dir}/stairs/rho1000/study-settings.txt "/numerics/cut_snap=1e-2\n")
+run_tool(study-stairs 3 --only rho1000 --out ${_dir}/stairs)
 
 # tools/validate-example1 makes its runs the same way: a row's own settings (mesh, time
 # step, 4225:1e-3's cut_snap) are passed and recorded, and --set on top is refused.

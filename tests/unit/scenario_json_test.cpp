@@ -113,6 +113,7 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   e.numerics.newton_abs_tol = 1e-9;
   e.numerics.reuse_contraction = 0.5;
   e.numerics.max_halvings = 1;
+  e.numerics.accept_flagged_reduction = 1e-4;
   EXPECT_EQ(fsi::fingerprint(e), f);
   EXPECT_NE(fsi::io::fingerprint_v3(e), fsi::io::fingerprint_v3(a));  // format 3 covered them
   fsi::Scenario g = a;

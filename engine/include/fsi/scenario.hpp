@@ -80,6 +80,13 @@ struct NumericsSpec {
   double reuse_contraction = 0.2;
   FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
   int max_halvings = 3;
+  /// halve_step only (ours): an attempt that did not converge but brought its scaled
+  /// residual down to this fraction of its start or below is accepted and flagged at once,
+  /// without the retries at k/2, k/4, ... (0: retry every failure). Where Newton stalls just
+  /// short of the tolerance (the stairs' thin rows at a corner: 1e-5 of the start), the
+  /// smaller steps stall alike and only multiply the cost; a step that really failed
+  /// (a reduction of 0.3, say) is still retried.
+  double accept_flagged_reduction = 0.0;
 
   double cip_gamma = 0.05;        ///< gamma of S_aniso (scaled by 1/(rho_f nu_f))
   /// Weight w of the transient term in the CIP scaling gamma h^2 / (rho_f nu_f + w rho_f h^2 / k)

@@ -226,6 +226,7 @@ struct Engine::Impl {
     // start) is kept: when every halving fails too, that one is accepted and flagged,
     // never simply the last (after real contact smaller steps can do worse).
     Eigen::VectorXd best_x;
+    std::string policy_note;  // why an unconverged step was accepted as it is
     double best_k = k, best_reduction = std::numeric_limits<double>::infinity();
     for (int attempt_no = 0;; ++attempt_no) {
       Eigen::VectorXd x;
@@ -235,6 +236,17 @@ struct Engine::Impl {
       if (report.converged || (finite && scenario.numerics.failure_policy == FailurePolicy::accept_and_flag)) {
         accept(std::move(x), k, std::move(quad), report);
         report.accepted = true;
+        break;
+      }
+      if (finite && scenario.numerics.failure_policy == FailurePolicy::halve_step &&
+          r.relative_residual <= scenario.numerics.accept_flagged_reduction) {
+        // Stalled just short of the tolerance: smaller steps would stall alike.
+        accept(std::move(x), k, std::move(quad), report);
+        report.accepted = true;
+        std::ostringstream why;
+        why << "accepted without halving: residual at " << r.relative_residual
+            << " of its start (accept_flagged_reduction)";
+        policy_note = why.str();
         break;
       }
       if (finite && scenario.numerics.failure_policy == FailurePolicy::halve_step) {
@@ -269,8 +281,10 @@ struct Engine::Impl {
       report.events.push_back({StepEvent::Kind::contact_force_active, state.time_s, {}, -1,
                                "penalty contact active, max pressure " +
                                    std::to_string(system.max_contact_pressure()) + " Pa"});
+    report.message = policy_note;
     if (last_ips_failures > 0)
-      report.message += std::to_string(last_ips_failures) + " IPS point(s) did not converge";
+      report.message += (report.message.empty() ? "" : "; ") + std::to_string(last_ips_failures) +
+                        " IPS point(s) did not converge";
     report.time_step_s = k;
     report.time_s = state.time_s;
     std::ostringstream msg;

@@ -104,6 +104,8 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   if (scenario.numerics.cut_snap == defaults.cut_snap) writer.object["numerics"].erase("cut_snap");
   if (scenario.numerics.cavitation_pressure_pa == defaults.cavitation_pressure_pa)
     writer.object["numerics"].erase("cavitation_pressure_pa");
+  if (scenario.numerics.accept_flagged_reduction == defaults.accept_flagged_reduction)
+    writer.object["numerics"].erase("accept_flagged_reduction");
   return std::move(writer.object);
 }
 

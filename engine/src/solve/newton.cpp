@@ -123,6 +123,8 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     }
   }
   result.non_finite = !x.allFinite();
+  const double start = norm(r_start);
+  result.relative_residual = start > 0.0 ? current / start : 0.0;
   return result;
 }
 

@@ -37,6 +37,9 @@ struct NewtonResult {
   int iterations = 0;
   int factorizations = 0;
   std::vector<double> norms;  ///< scaled residual norm before each iteration and at the end
+  /// The final residual over the step's first one, both measured with the row scale of the
+  /// last factorization (norms.back() / norms.front() may mix two scales).
+  double relative_residual = 1.0;
   double assembly_seconds = 0.0, factorization_seconds = 0.0, solve_seconds = 0.0;
   /// The iterate of the last factorization of this call (empty: none happened).
   Eigen::VectorXd factorization_point;

@@ -1,0 +1,64 @@
+// halve_step retries an unconverged step with k/2, k/4, ...; accept_flagged_reduction lets
+// it accept (and flag) an attempt that got its residual far enough down at once, since
+// where Newton stalls just short of the tolerance smaller steps stall alike.
+#include <fsi/engine.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "test_scenarios.hpp"
+
+namespace {
+
+int halvings(const fsi::StepReport& r) {
+  return static_cast<int>(std::count_if(r.events.begin(), r.events.end(), [](const fsi::StepEvent& e) {
+    return e.kind == fsi::StepEvent::Kind::step_halved;
+  }));
+}
+
+/// Example 1 falling for a few steps, then with a budget of one Newton iteration per
+/// attempt: no step can converge, and the one iteration takes the residual well down.
+fsi::Engine one_iteration_per_attempt(double accept_flagged_reduction) {
+  const fsi::Scenario s = fsi::testing::coarse_example1();
+  fsi::Engine engine(s);
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(engine.step().converged);
+  fsi::NumericsSpec n = s.numerics;
+  n.newton_budget = 1;
+  n.failure_policy = fsi::FailurePolicy::halve_step;
+  n.max_halvings = 2;
+  n.accept_flagged_reduction = accept_flagged_reduction;
+  engine.set_numerics(n);
+  return engine;
+}
+
+TEST(FailurePolicy, HalveStepRetriesEveryFailureByDefault) {
+  fsi::Engine engine = one_iteration_per_attempt(0.0);
+  const fsi::StepReport r = engine.step();
+  EXPECT_FALSE(r.converged) << r.message;
+  EXPECT_TRUE(r.accepted);
+  EXPECT_EQ(halvings(r), 2) << r.message;
+  EXPECT_EQ(r.message.find("accept_flagged_reduction"), std::string::npos) << r.message;
+}
+
+TEST(FailurePolicy, AStepThatStalledFarDownIsAcceptedWithoutHalving) {
+  fsi::Engine engine = one_iteration_per_attempt(0.5);
+  const fsi::StepReport r = engine.step();
+  EXPECT_FALSE(r.converged) << "flagged, not converged: " << r.message;
+  EXPECT_TRUE(r.accepted);
+  EXPECT_EQ(halvings(r), 0) << r.message;
+  EXPECT_DOUBLE_EQ(r.time_step_s, engine.scenario().numerics.time_step_s);
+  EXPECT_NE(r.message.find("accept_flagged_reduction"), std::string::npos) << r.message;
+  ASSERT_GE(r.residual_norms.size(), 2u);
+  EXPECT_LT(r.residual_norms.back(), 0.5 * r.residual_norms.front()) << r.message;
+}
+
+TEST(FailurePolicy, AStepThatDidNotGetFarEnoughDownIsStillHalved) {
+  // One Newton iteration does not take the residual down by 1e-12: halved as before.
+  fsi::Engine engine = one_iteration_per_attempt(1e-12);
+  const fsi::StepReport r = engine.step();
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(halvings(r), 2) << r.message;
+}
+
+}  // namespace
