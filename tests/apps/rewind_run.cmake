@@ -1,6 +1,7 @@
 # tools/rewind-run: a tiny drop run (fsi-movie, checkpoints every 2 steps) rewound to step 4
 # with a halved time step goes on from there with --continue at that step; bad requests
-# (physics keys, a missing checkpoint, a value fsi-step refuses) change nothing; fsi-sketch
+# (physics keys, a missing checkpoint, a value fsi-step refuses, an fsi-movie still writing
+# the run) change nothing; fsi-sketch
 # draws checkpoints from before and after the rewind.
 # Inputs: -DMOVIE -DSTEP -DSKETCH -DSOURCE_DIR -DBINARY_DIR.
 set(_dir ${BINARY_DIR}/test_tmp/rewind_run)
@@ -48,6 +49,19 @@ expect_checkpoints("step_000002.ckpt;step_000004.ckpt;step_000006.ckpt;step_0000
 if(EXISTS ${_run}/REWOUND.txt)
   message(FATAL_ERROR "a refused rewind wrote REWOUND.txt")
 endif()
+
+# An fsi-movie still writing the run is found however its OUTDIR was written: a stand-in
+# named fsi-movie, started in the run's parent folder with the relative path "run".
+file(WRITE ${_dir}/fsi-movie "#!/bin/sh\nsleep 60\n")
+file(CHMOD ${_dir}/fsi-movie PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+execute_process(COMMAND sh -c "cd '${_dir}' && { ./fsi-movie scenario.json run > /dev/null 2>&1 & echo $! > writer.pid; }")
+execute_process(COMMAND sleep 0.5)
+rewind(3 ${_run} 4 --set /numerics/time_step_s=0.005)
+execute_process(COMMAND sh -c "kill $(cat '${_dir}/writer.pid')")
+if(NOT _rewind_out MATCHES "still writing")
+  message(FATAL_ERROR "a running fsi-movie started with a relative OUTDIR was not found: ${_rewind_out}")
+endif()
+expect_checkpoints("step_000002.ckpt;step_000004.ckpt;step_000006.ckpt;step_000008.ckpt;step_000010.ckpt")
 
 rewind(0 ${_run} 4 --set /numerics/time_step_s=0.005)
 expect_checkpoints("step_000002.ckpt;step_000004.ckpt")
