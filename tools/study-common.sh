@@ -58,10 +58,16 @@ study_run_settings() {
 }
 
 # study_physics_settings: the settings on stdin without the solver controls (Newton's
-# budget and tolerances, the failure policy: engine/src/io/fingerprint.hpp's
-# kSolverControlKeys). A run may go on with other solver controls, as its checkpoints do.
+# budget and tolerances, the failure policy). A run may go on with other solver controls,
+# as its checkpoints do. The keys are read from the engine's own list (kSolverControlKeys),
+# so that the two cannot drift apart.
+study_fingerprint_hpp=$(dirname "${BASH_SOURCE[0]}")/../engine/src/io/fingerprint.hpp
+study_solver_control_keys=$(awk '/kSolverControlKeys\{/,/\};/' "$study_fingerprint_hpp" 2>/dev/null |
+                            grep -o '"[a-z_]*"' | tr -d '"' | paste -sd'|')
+[ -n "$study_solver_control_keys" ] ||
+  { echo "$0: no solver control keys in $study_fingerprint_hpp (kSolverControlKeys)" >&2; exit 3; }
 study_physics_settings() {
-  grep -v -E '^/numerics/(newton_budget|newton_rel_tol|newton_abs_tol|reuse_contraction|failure_policy|max_halvings|accept_flagged_reduction)=' || true
+  grep -v -E "^/numerics/($study_solver_control_keys)=" || true
 }
 
 # study_settings_match DIR [RUN ARGS...]: false (and says why) when DIR holds a run made
@@ -122,7 +128,7 @@ study_run_one() {
 study_run_all() {
   local jobs=$1 end_time=$2
   export -f study_run_one study_run_finished study_run_settings study_physics_settings
-  export study_out FSI_MOVIE study_sets_text study_checkpoint_every
+  export study_out FSI_MOVIE study_sets_text study_checkpoint_every study_solver_control_keys
   if [ "${study_summary_only:-0}" = 1 ]; then cat > /dev/null; return 0; fi
   local runs name scenario args refused=0
   runs=$(awk -v only="${study_only:-}" 'BEGIN { n = split(only, o, ","); for (i = 1; i <= n; ++i) keep[o[i]] = 1 }
