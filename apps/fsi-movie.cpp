@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "frame_options.hpp"
+#include "heap_tuning.hpp"
 #include "interrupt_flag.hpp"
 #include "movie_run.hpp"
 #include "progress_meter.hpp"
@@ -136,6 +137,7 @@ Arguments parse_arguments(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  fsi::app::keep_large_blocks_in_heap();  // see heap_tuning.hpp: a factorization per step
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "-h" || std::string(argv[i]) == "--help") {
       std::fputs(kUsage, stdout);

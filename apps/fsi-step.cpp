@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "heap_tuning.hpp"
 #include "scenario_overrides.hpp"
 #include "step_session.hpp"
 
@@ -39,6 +40,7 @@ int usage(const std::string& why) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  fsi::app::keep_large_blocks_in_heap();  // see heap_tuning.hpp: a factorization per step
   std::string file;
   std::vector<fsi::app::Override> overrides;
   try {
