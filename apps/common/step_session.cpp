@@ -42,6 +42,31 @@ void want_args(const std::vector<std::string>& words, std::size_t lo, std::size_
   }
 }
 
+/// The last step's report in full: what a script needs to see why Newton stalled.
+nlohmann::ordered_json report_json(const StepReport& r) {
+  nlohmann::ordered_json j;
+  j["converged"] = r.converged;
+  j["accepted"] = r.accepted;
+  j["time_step_s"] = r.time_step_s;
+  j["newton_iterations"] = r.newton_iterations;
+  j["factorizations"] = r.factorizations;
+  j["residual_norms"] = r.residual_norms;
+  if (const ResidualPeak& w = r.largest_residual; w.node >= 0) {
+    j["largest_residual"] = {{"equation", equation_name(w.equation)},
+                             {"node", w.node},
+                             {"where_m", {w.where_m.x, w.where_m.y}},
+                             {"phase", w.phase},
+                             {"scaled_value", w.scaled_value}};
+  }
+  j["seconds"] = {{"geometry", r.geometry_seconds}, {"mapping", r.mapping_seconds},
+                  {"assembly", r.assembly_seconds}, {"factorization", r.factorization_seconds},
+                  {"solve", r.solve_seconds}};
+  nlohmann::ordered_json events = nlohmann::ordered_json::array();
+  for (const StepEvent& e : r.events) events.push_back(e.text);
+  j["events"] = events;
+  return j;
+}
+
 }  // namespace
 
 StepSession::StepSession(const Scenario& scenario)
@@ -122,12 +147,14 @@ nlohmann::ordered_json StepSession::step(long n) {
     const StepReport r = engine_.step();
     (r.converged ? converged_ : unconverged_) += 1;
     last_message_ = r.message;
+    last_report_ = report_json(r);
     rejected = !r.accepted;
   }
   auto j = ok();
   j["converged_steps"] = converged_;
   j["unconverged_steps"] = unconverged_;
   j["last_message"] = last_message_;
+  j["last_report"] = last_report_;
   if (rejected) j["rejected"] = true;  // the state did not advance; change numerics first
   return j;
 }

@@ -2,7 +2,10 @@
 /// \file step_session.hpp
 /// The command interpreter behind fsi-step: one engine, commands in, one JSON object
 /// out per command. Commands (words separated by blanks):
-///   step [N]                  N time steps (default 1); stops early at a rejected step
+///   step [N]                  N time steps (default 1); stops early at a rejected step.
+///                             The answer carries the last step's report ("last_report":
+///                             Newton's residuals, factorizations, the largest residual's
+///                             equation, node and place, seconds per stage, events)
 ///   render FILE.png [field=vx|vy|vmag|p|umag] [zoom=x0,y0,x1,y1] [size=WxH] [mesh=0|1]
 ///   functionals               the chapter's functionals of the current state
 ///   set KEY VALUE             a numerical parameter (any key of /numerics, e.g.
@@ -45,6 +48,7 @@ class StepSession {
   NumericsSpec numerics_;  ///< what set_numerics was last given
   long converged_ = 0, unconverged_ = 0;
   std::string last_message_;
+  nlohmann::ordered_json last_report_;  ///< the last step's StepReport (see report_json)
   std::unique_ptr<render::Renderer> renderer_;  ///< made at the first render
   bool quit_ = false;
 };

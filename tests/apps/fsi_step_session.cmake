@@ -21,7 +21,7 @@ endif()
 set(_expect
   "ok|commands"                                  # help
   "ok|t,step,functionals"                        # functionals
-  "ok|t,step,converged_steps,unconverged_steps,last_message"  # step 3
+  "ok|t,step,converged_steps,unconverged_steps,last_message,last_report"  # step 3
   "ok|numerics" "ok|numerics" "ok|numerics"      # set x3
   "ok|numerics"                                  # numerics
   "ok|converged_steps"                           # step
@@ -92,6 +92,23 @@ foreach(_want IN LISTS _expect)
     if(NOT _step EQUAL 3)
       message(FATAL_ERROR "step 3 from step 0 should reach step 3: ${_line}")
     endif()
+    # The last step's report: Newton's residual history, starting above where it ended.
+    string(JSON _norms ERROR_VARIABLE _bad LENGTH "${_line}" last_report residual_norms)
+    if(_bad OR _norms LESS 2)
+      message(FATAL_ERROR "last_report should list the residual norms: ${_line}")
+    endif()
+    math(EXPR _last "${_norms} - 1")
+    string(JSON _first GET "${_line}" last_report residual_norms 0)
+    string(JSON _final GET "${_line}" last_report residual_norms ${_last})
+    if(NOT _final LESS _first)
+      message(FATAL_ERROR "the residual should fall within a step: ${_line}")
+    endif()
+    foreach(_key factorizations newton_iterations seconds events)
+      string(JSON _v ERROR_VARIABLE _bad GET "${_line}" last_report ${_key})
+      if(_bad)
+        message(FATAL_ERROR "last_report lacks '${_key}': ${_line}")
+      endif()
+    endforeach()
   elseif(_answers EQUAL 9)
     string(JSON _functionals_before_save GET "${_line}" functionals)
   elseif(_answers EQUAL 17)

@@ -61,4 +61,31 @@ TEST(FailurePolicy, AStepThatDidNotGetFarEnoughDownIsStillHalved) {
   EXPECT_EQ(halvings(r), 2) << r.message;
 }
 
+TEST(FailurePolicy, AnUnconvergedStepSaysWhereItsResidualIsLargest) {
+  fsi::Engine engine = one_iteration_per_attempt(0.5);
+  const fsi::StepReport r = engine.step();
+  ASSERT_FALSE(r.converged);
+  const fsi::ResidualPeak& w = r.largest_residual;
+  ASSERT_GE(w.node, 0) << r.message;
+  // The peak is the final scaled norm, at a node of the box ([-1, 1] x [-1, 0.5] m).
+  EXPECT_DOUBLE_EQ(w.scaled_value, r.residual_norms.back());
+  EXPECT_GE(w.where_m.x, -1.0);
+  EXPECT_LE(w.where_m.x, 1.0);
+  EXPECT_GE(w.where_m.y, -1.0);
+  EXPECT_LE(w.where_m.y, 0.5);
+  EXPECT_TRUE(std::string(w.phase) == "fluid" || std::string(w.phase) == "solid" ||
+              std::string(w.phase) == "interface")
+      << w.phase;
+  EXPECT_NE(r.message.find(std::string("largest residual: ") + fsi::equation_name(w.equation)),
+            std::string::npos)
+      << r.message;
+}
+
+TEST(FailurePolicy, AConvergedStepKeepsItsMessageShort) {
+  fsi::Engine engine(fsi::testing::coarse_example1());
+  const fsi::StepReport r = engine.step();
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(r.message.find("largest residual"), std::string::npos) << r.message;
+}
+
 }  // namespace

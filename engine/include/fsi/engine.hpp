@@ -28,6 +28,19 @@ struct StepEvent {
   std::string text;
 };
 
+/// Where a step's final residual is largest, after row scaling (the step report's
+/// diagnosis of a Newton stall: which equation, at which node, in which phase).
+struct ResidualPeak {
+  int node = -1;                ///< -1: no residual was measured
+  Field equation = kVx;         ///< row kind: momentum x/y (kVx, kVy), displacement x/y, continuity (kP)
+  Point2 where_m;               ///< the node's position in the step's (moved) mesh
+  const char* phase = "";       ///< "fluid", "solid" or "interface" (node in both)
+  double scaled_value = 0.0;    ///< |R_i| / max_j |J_ij|, as in residual_norms
+};
+
+/// The equation a row of the system belongs to, in words ("momentum x", ...).
+const char* equation_name(Field row);
+
 /// What one call of Engine::step() did.
 struct StepReport {
   bool converged = false;
@@ -43,6 +56,7 @@ struct StepReport {
   double assembly_seconds = 0.0;
   double factorization_seconds = 0.0;
   double solve_seconds = 0.0;
+  ResidualPeak largest_residual;      ///< of the attempt that was accepted (or the last)
   std::vector<StepEvent> events;
   std::string message;            ///< human-readable summary (failure reason if any)
 };

@@ -218,6 +218,21 @@ struct Engine::Impl {
     }
   }
 
+  /// Where the attempt's final residual peaks, on the geometry it was solved on (cut_next:
+  /// call before accept() moves it).
+  ResidualPeak residual_peak(const solve::NewtonResult& r) const {
+    ResidualPeak p;
+    if (r.worst_row < 0 || r.norms.empty()) return p;
+    const int node = static_cast<int>(r.worst_row / kFieldsPerNode);
+    p.node = node;
+    p.equation = static_cast<Field>(r.worst_row % kFieldsPerNode);
+    p.where_m = {cut_next.x[node].x(), cut_next.x[node].y()};
+    const bool solid = cut_next.touches_solid[node], fluid = cut_next.touches_fluid[node];
+    p.phase = solid && fluid ? "interface" : solid ? "solid" : "fluid";
+    p.scaled_value = r.norms.back();
+    return p;
+  }
+
   StepReport step() {
     StepReport report;
     double k = scenario.numerics.time_step_s;
@@ -228,10 +243,12 @@ struct Engine::Impl {
     Eigen::VectorXd best_x;
     std::string policy_note;  // why an unconverged step was accepted as it is
     double best_k = k, best_reduction = std::numeric_limits<double>::infinity();
+    ResidualPeak best_peak;
     for (int attempt_no = 0;; ++attempt_no) {
       Eigen::VectorXd x;
       const solve::NewtonResult r = attempt(k, quad, x, report);
       const bool finite = !r.non_finite && x.allFinite();
+      report.largest_residual = residual_peak(r);
       report.converged = r.converged && finite;
       if (report.converged || (finite && scenario.numerics.failure_policy == FailurePolicy::accept_and_flag)) {
         accept(std::move(x), k, std::move(quad), report);
@@ -255,6 +272,7 @@ struct Engine::Impl {
           best_reduction = reduction;
           best_x = x;
           best_k = k;
+          best_peak = report.largest_residual;
         }
         if (attempt_no < scenario.numerics.max_halvings) {
           k *= 0.5;
@@ -265,6 +283,7 @@ struct Engine::Impl {
       }
       if (best_x.size() > 0) {
         k = best_k;
+        report.largest_residual = best_peak;
         accept(std::move(best_x), k, std::move(quad), report);
         report.accepted = true;
         break;
@@ -291,11 +310,25 @@ struct Engine::Impl {
     msg << (report.converged ? "converged" : "NOT converged") << " in " << report.newton_iterations
         << " Newton iteration(s), " << report.factorizations << " factorization(s)";
     if (!report.residual_norms.empty()) msg << ", residual " << report.residual_norms.front() << " -> " << report.residual_norms.back();
+    if (const ResidualPeak& w = report.largest_residual; !report.converged && w.node >= 0)
+      msg << "; largest residual: " << equation_name(w.equation) << " at node " << w.node << " ("
+          << w.where_m.x << ", " << w.where_m.y << ") m, " << w.phase;
     if (!report.accepted) msg << "; step rejected";
     report.message = msg.str() + (report.message.empty() ? "" : "; " + report.message);
     return report;
   }
 };
+
+const char* equation_name(Field row) {
+  switch (row) {
+    case kVx: return "momentum x";
+    case kVy: return "momentum y";
+    case kUx: return "displacement x";
+    case kUy: return "displacement y";
+    case kP: return "continuity";
+  }
+  return "?";
+}
 
 Engine::Engine(Scenario scenario) : impl_(std::make_unique<Impl>(std::move(scenario))) {}
 Engine::~Engine() = default;

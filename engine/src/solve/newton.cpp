@@ -125,6 +125,11 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
   result.non_finite = !x.allFinite();
   const double start = norm(r_start);
   result.relative_residual = start > 0.0 ? current / start : 0.0;
+  if (r.size() > 0 && r.allFinite()) {
+    const Eigen::VectorXd scaled =
+        row_scale_.size() == r.size() ? Eigen::VectorXd(r.cwiseProduct(row_scale_)) : r;
+    scaled.cwiseAbs().maxCoeff(&result.worst_row);
+  }
   return result;
 }
 

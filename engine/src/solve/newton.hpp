@@ -40,6 +40,8 @@ struct NewtonResult {
   /// The final residual over the step's first one, both measured with the row scale of the
   /// last factorization (norms.back() / norms.front() may mix two scales).
   double relative_residual = 1.0;
+  /// The row of the largest scaled final residual (-1: none measured).
+  Eigen::Index worst_row = -1;
   double assembly_seconds = 0.0, factorization_seconds = 0.0, solve_seconds = 0.0;
   /// The iterate of the last factorization of this call (empty: none happened).
   Eigen::VectorXd factorization_point;
