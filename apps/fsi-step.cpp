@@ -5,9 +5,13 @@
 // [mesh=0|1], functionals, set KEY VALUE, numerics, save FILE, load FILE, help, quit
 // (see apps/common/step_session.hpp).
 //
-//   fsi-step SCENARIO.json [--set KEY=VALUE ...]
+//   fsi-step SCENARIO.json [--set KEY=VALUE ...] [--exit-on-error]
 //
-// Exit code: 0 after quit/EOF, 2 bad command line or scenario (message + usage).
+// --exit-on-error is for scripts: after the first error answer the session ends (exit
+// code 3), so that a failed "load CKPT" is not followed by "step 1000" from t = 0.
+//
+// Exit code: 0 after quit/EOF, 2 bad command line or scenario (message + usage), 3 a
+// command failed under --exit-on-error.
 //
 // Examples:
 //   fsi-step assets/scenarios/ball_drop.json                    # type: step 10, functionals
@@ -29,8 +33,8 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: fsi-step SCENARIO.json [--set KEY=VALUE ...]   (commands on stdin, 'help' lists "
-    "them)\n";
+    "usage: fsi-step SCENARIO.json [--set KEY=VALUE ...] [--exit-on-error]   (commands on stdin, "
+    "'help' lists them)\n";
 
 int usage(const std::string& why) {
   std::fprintf(stderr, "fsi-step: %s\n%s", why.c_str(), kUsage);
@@ -43,6 +47,7 @@ int main(int argc, char** argv) {
   fsi::app::keep_large_blocks_in_heap();  // see heap_tuning.hpp: a factorization per step
   std::string file;
   std::vector<fsi::app::Override> overrides;
+  bool exit_on_error = false;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -50,7 +55,9 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, stderr);
         return 0;
       }
-      if (a == "--set") {
+      if (a == "--exit-on-error") {
+        exit_on_error = true;
+      } else if (a == "--set") {
         if (i + 1 >= argc) throw fsi::InputError("command line", a, "needs KEY=VALUE");
         overrides.push_back(fsi::app::parse_override(argv[++i]));
       } else if (a.size() > 1 && a[0] == '-') {
@@ -74,6 +81,10 @@ int main(int argc, char** argv) {
         // Invalid UTF-8 echoed from a command is replaced, never an exception.
         std::cout << answer->dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
                   << std::endl;  // flushed: a script waits for each answer
+        if (exit_on_error && answer->contains("error")) {
+          std::fprintf(stderr, "fsi-step: stopped at the first error (--exit-on-error)\n");
+          return 3;
+        }
       }
     }
     return 0;

@@ -138,4 +138,17 @@ file(SHA256 ${_out}/step_gap_stretched.png _stretched)
 if(_kept STREQUAL _stretched)
   message(FATAL_ERROR "render stretch=1 drew the same picture as with the aspect kept")
 endif()
+
+# --exit-on-error: a script whose "load" fails must not go on stepping from t = 0.
+file(WRITE ${_out}/strict.txt "step 1\nload ${_out}/no_such_checkpoint.ckpt\nstep 1\nquit\n")
+execute_process(COMMAND ${STEP} ${SOURCE_DIR}/tests/data/tiny_drop.json --exit-on-error
+  INPUT_FILE ${_out}/strict.txt OUTPUT_VARIABLE _strict_out ERROR_VARIABLE _strict_err
+  RESULT_VARIABLE _strict_rc TIMEOUT 60)
+string(REGEX MATCHALL "\n" _strict_lines "${_strict_out}")
+list(LENGTH _strict_lines _strict_count)
+if(NOT _strict_rc EQUAL 3 OR NOT _strict_count EQUAL 2 OR NOT _strict_out MATCHES "no_such_checkpoint"
+   OR NOT _strict_err MATCHES "exit-on-error")
+  message(FATAL_ERROR "--exit-on-error should stop after the failed load with exit code 3 "
+                      "(got ${_strict_rc}, ${_strict_count} answers):\n${_strict_out}\n${_strict_err}")
+endif()
 message("fsi-step session: ${_answers} answers as expected")
