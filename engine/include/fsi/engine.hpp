@@ -35,7 +35,7 @@ struct ResidualPeak {
   Field equation = kVx;         ///< row kind: momentum x/y (kVx, kVy), displacement x/y, continuity (kP)
   Point2 where_m;               ///< the node's position in the step's (moved) mesh
   const char* phase = "";       ///< "fluid", "solid" or "interface" (node in both)
-  double scaled_value = 0.0;    ///< |R_i| / max_j |J_ij|, as in residual_norms
+  double scaled_value = 0.0;    ///< |R_i| / max_j |J_ij| (the last factorization's J), as residual_norms
 };
 
 /// The equation a row of the system belongs to, in words ("momentum x", ...).

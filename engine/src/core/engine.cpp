@@ -222,14 +222,14 @@ struct Engine::Impl {
   /// call before accept() moves it).
   ResidualPeak residual_peak(const solve::NewtonResult& r) const {
     ResidualPeak p;
-    if (r.worst_row < 0 || r.norms.empty()) return p;
+    if (r.worst_row < 0) return p;
     const int node = static_cast<int>(r.worst_row / kFieldsPerNode);
     p.node = node;
     p.equation = static_cast<Field>(r.worst_row % kFieldsPerNode);
     p.where_m = {cut_next.x[node].x(), cut_next.x[node].y()};
     const bool solid = cut_next.touches_solid[node], fluid = cut_next.touches_fluid[node];
     p.phase = solid && fluid ? "interface" : solid ? "solid" : "fluid";
-    p.scaled_value = r.norms.back();
+    p.scaled_value = r.worst_value;
     return p;
   }
 

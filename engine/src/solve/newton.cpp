@@ -128,7 +128,7 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
   if (r.size() > 0 && r.allFinite()) {
     const Eigen::VectorXd scaled =
         row_scale_.size() == r.size() ? Eigen::VectorXd(r.cwiseProduct(row_scale_)) : r;
-    scaled.cwiseAbs().maxCoeff(&result.worst_row);
+    result.worst_value = scaled.cwiseAbs().maxCoeff(&result.worst_row);
   }
   return result;
 }

@@ -40,8 +40,10 @@ struct NewtonResult {
   /// The final residual over the step's first one, both measured with the row scale of the
   /// last factorization (norms.back() / norms.front() may mix two scales).
   double relative_residual = 1.0;
-  /// The row of the largest scaled final residual (-1: none measured).
+  /// The row of the largest scaled final residual (-1: none measured) and that value, in
+  /// the row scale of the last factorization.
   Eigen::Index worst_row = -1;
+  double worst_value = 0.0;
   double assembly_seconds = 0.0, factorization_seconds = 0.0, solve_seconds = 0.0;
   /// The iterate of the last factorization of this call (empty: none happened).
   Eigen::VectorXd factorization_point;
