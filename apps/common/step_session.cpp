@@ -142,20 +142,17 @@ std::optional<nlohmann::ordered_json> StepSession::handle(const std::string& lin
 }
 
 nlohmann::ordered_json StepSession::step(long n) {
-  bool rejected = false;
-  for (long i = 0; i < n && !rejected; ++i) {
-    const StepReport r = engine_.step();
-    (r.converged ? converged_ : unconverged_) += 1;
-    last_message_ = r.message;
-    last_report_ = report_json(r);
-    rejected = !r.accepted;
+  StepReport last;  // n >= 1: the loop runs at least once
+  for (long i = 0; i < n && (i == 0 || last.accepted); ++i) {
+    last = engine_.step();
+    (last.converged ? converged_ : unconverged_) += 1;
   }
   auto j = ok();
   j["converged_steps"] = converged_;
   j["unconverged_steps"] = unconverged_;
-  j["last_message"] = last_message_;
-  j["last_report"] = last_report_;
-  if (rejected) j["rejected"] = true;  // the state did not advance; change numerics first
+  j["last_message"] = last.message;
+  j["last_report"] = report_json(last);
+  if (!last.accepted) j["rejected"] = true;  // the state did not advance; change numerics first
   return j;
 }
 

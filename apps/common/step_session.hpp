@@ -47,8 +47,6 @@ class StepSession {
   Engine engine_;
   NumericsSpec numerics_;  ///< what set_numerics was last given
   long converged_ = 0, unconverged_ = 0;
-  std::string last_message_;
-  nlohmann::ordered_json last_report_;  ///< the last step's StepReport (see report_json)
   std::unique_ptr<render::Renderer> renderer_;  ///< made at the first render
   bool quit_ = false;
 };
