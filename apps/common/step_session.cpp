@@ -9,6 +9,7 @@
 
 #include "frame_options.hpp"
 #include "functionals_json.hpp"
+#include "triangle_quality.hpp"
 #include "scenario_overrides.hpp"
 
 namespace fsi::app {
@@ -21,6 +22,7 @@ constexpr const char* kCommands[] = {
     "render FILE.png [field=vx|vy|vmag|p|umag] [zoom=x0,y0,x1,y1] [size=WxH] [mesh=0|1] "
     "[stretch=0|1]",
     "functionals",
+    "quality   (the sub-triangles' largest angles and smallest area: where the cut mesh is poor)",
     "set KEY VALUE   (KEY: a /numerics key, e.g. time_step_s, newton_budget, failure_policy)",
     "numerics",
     "save FILE",
@@ -99,6 +101,20 @@ std::optional<nlohmann::ordered_json> StepSession::handle(const std::string& lin
       want_args(w, 0, 0, "functionals");
       auto j = ok();
       j["functionals"] = functionals_json(engine_.state().functionals);
+      return j;
+    }
+    if (c == "quality") {
+      want_args(w, 0, 0, "quality");
+      const TriangleQuality q = measure_triangles(engine_.view());
+      auto j = ok();
+      j["quality"] = {{"triangles", q.triangles},
+                      {"max_angle_above_150_deg", q.max_angle_above_150_deg},
+                      {"max_angle_above_160_deg", q.max_angle_above_160_deg},
+                      {"max_angle_above_170_deg", q.max_angle_above_170_deg},
+                      {"worst_max_angle_deg", q.worst_max_angle_deg},
+                      {"worst_at_m", {q.worst_at.x, q.worst_at.y}},
+                      {"smallest_area_m2", q.smallest_area_m2},
+                      {"smallest_at_m", {q.smallest_at.x, q.smallest_at.y}}};
       return j;
     }
     if (c == "set") {

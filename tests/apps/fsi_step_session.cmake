@@ -33,6 +33,8 @@ set(_expect
   "ok|converged_steps"                           # step 2
   "ok|file"                                      # load
   "ok|functionals"                               # functionals (after load)
+  "ok|quality"                                   # quality
+  "error|quality"                                # quality with an argument
   "error|bogus"
   "error|step N"
   "error|step N"

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -176,6 +177,64 @@ TEST(CutMesh, SnappingCutsToCornersKeepsTheInterfaceClosed) {
     EXPECT_NEAR(total_area(cut), 1.0, 1e-13);
     EXPECT_NEAR(interface_length(cut), 2 * std::numbers::pi * 0.3, 0.1);
     expect_closed(cut);
+  }
+}
+
+TEST(CutMesh, ASnapDistanceTreatsShortAndLongSidesAlike) {
+  // Flat patches like the stairs' thin rows: 5.6 cm wide, 8 mm tall. A relative snap large
+  // enough for a cut 0.6 mm from a corner on a short side (7.5 %) would move cuts on the
+  // long sides by up to 4 mm; a snap distance of 0.8 mm takes the first and leaves a cut
+  // 1.9 mm from a corner on a long side alone.
+  fsi::MeshSpec spec;
+  fsi::BlockSpec b;
+  b.x = {fsi::AxisPiece{0.0, 0.112, 2, 0.0, 0.0}};
+  b.y = {fsi::AxisPiece{0.0, 0.016, 2, 0.0, 0.0}};
+  spec.blocks = {b};
+  const auto mesh = fsi::mesh::build_patch_mesh(spec, {});
+  auto sign_at = [&](const fsi::fe::CutData& data, double x, double y) {
+    for (int n = 0; n < mesh.num_nodes(); ++n)
+      if ((mesh.nodes[n] - Vec2(x, y)).norm() < 1e-12) return static_cast<int>(data.corner_sign[n]);
+    ADD_FAILURE() << "no corner at (" << x << ", " << y << ")";
+    return 99;
+  };
+  auto cut_edges = [](const fsi::fe::CutData& data) {
+    return std::count_if(data.edge_cut.begin(), data.edge_cut.end(), [](double t) { return t >= 0.0; });
+  };
+  const fsi::fe::CutOptions relative{3e-2, 0.0}, distance{3e-2, 8e-4};
+
+  // Short sides cut 0.6 mm above the row y = 8 mm.
+  auto low = [](const Vec2& x) { return x.y() - 0.0086; };
+  const auto short_relative = fsi::fe::cut_data(mesh, low, relative);
+  EXPECT_EQ(sign_at(short_relative, 0.056, 0.008), -1);
+  EXPECT_EQ(cut_edges(short_relative), 3);
+  const auto short_distance = fsi::fe::cut_data(mesh, low, distance);
+  for (double x : {0.0, 0.056, 0.112}) EXPECT_EQ(sign_at(short_distance, x, 0.008), 0) << x;
+  EXPECT_EQ(cut_edges(short_distance), 0);
+
+  // Long sides cut 1.9 mm right of the column x = 5.6 cm (3.4 % of the side).
+  auto right = [](const Vec2& x) { return x.x() - 0.0579; };
+  const auto long_relative = fsi::fe::cut_data(mesh, right, fsi::fe::CutOptions{5e-2, 0.0});
+  EXPECT_EQ(sign_at(long_relative, 0.056, 0.0), 0);
+  const auto long_distance = fsi::fe::cut_data(mesh, right, distance);
+  EXPECT_EQ(sign_at(long_distance, 0.056, 0.0), -1);
+  EXPECT_EQ(cut_edges(long_distance), 3);
+
+  // Either way the sub-elements still tile the patches.
+  for (const auto* data : {&short_distance, &long_distance}) {
+    const CutMesh cut = fsi::fe::build_cut_mesh(mesh, *data);
+    EXPECT_NEAR(total_area(cut), 0.112 * 0.016, 1e-15);
+  }
+}
+
+TEST(CutMesh, ASnapDistanceLongerThanHalfASideSnapsToTheNearerCorner) {
+  const auto mesh = unit_mesh(2);  // sides of 0.5
+  auto phi = [](const Vec2& x) { return x.y() - 0.3; };  // 0.3 into the sides from y = 0
+  const auto data = fsi::fe::cut_data(mesh, phi, fsi::fe::CutOptions{0.0, 0.4});
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    if (!mesh.is_corner[n]) continue;
+    const double y = mesh.nodes[n].y();
+    const int want = y == 0.5 ? 0 : (y < 0.5 ? -1 : 1);
+    EXPECT_EQ(data.corner_sign[n], want) << "corner at y = " << y;
   }
 }
 

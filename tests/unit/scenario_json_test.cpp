@@ -77,7 +77,7 @@ TEST(ScenarioJson, WritesEveryField) {
        {"\"name\"", "\"blocks\"", "\"from_m\"", "\"corners\"", "\"refinements\"", "\"walls\"",
         "\"initial_velocity_mps\"", "\"viscosity_m2ps\"", "\"lambda_pa\"", "\"gravity_mps2\"",
         "\"failure_policy\"", "\"identity_gap_m\"", "\"cip_wall_film_factor\"", "\"cut_snap\"",
-        "\"cavitation_pressure_pa\"", "\"dist0_m\"", "\"range_max\"", "\"mesh_overlay\""}) {
+        "\"cut_snap_distance_m\"", "\"cavitation_pressure_pa\"", "\"dist0_m\"", "\"range_max\"", "\"mesh_overlay\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key;
   }
 }
@@ -128,6 +128,9 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   fsi::Scenario j = a;  // the same
   j.numerics.cavitation_pressure_pa = -1e4;
   EXPECT_NE(fsi::fingerprint(j), f);
+  fsi::Scenario k = a;  // the same
+  k.numerics.cut_snap_distance_m = 8e-4;
+  EXPECT_NE(fsi::fingerprint(k), f);
 }
 
 TEST(ScenarioJson, FingerprintIsPinned) {

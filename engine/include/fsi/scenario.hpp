@@ -107,6 +107,12 @@ struct NumericsSpec {
   /// wide whose nodal values are nearly free, and Newton stalls on it (the stairs' thin
   /// rows; docs/solver.md). Snapping moves the interface by at most cut_snap x side.
   double cut_snap = 1.0e-6;
+  /// A cut closer than this distance [m] to a patch corner goes through the corner too
+  /// (ours; 0 = off, the default). cut_snap is relative to the side it lies on, which in
+  /// flat patches (the stairs' 4-8 mm rows, 5.6 cm wide) is either too small for the short
+  /// sides or moves the interface by millimetres along the long ones; a distance treats
+  /// both alike. Range [0, 0.1] m.
+  double cut_snap_distance_m = 0.0;
   /// T_m = id where the body is closer than this to a wall (the chapter's contact gap).
   double identity_gap_m = 0.0;    ///< 0: one patch height at the wall
   /// Cavitation floor p_cav [Pa] (ours; 0 = off, the chapter). Where the fluid pressure

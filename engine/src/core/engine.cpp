@@ -51,7 +51,9 @@ struct Engine::Impl {
   fe::CutData data_next;
   fe::QuadratureTable quad_cur;
 
-  fe::CutOptions cut_options() const { return fe::CutOptions{scenario.numerics.cut_snap}; }
+  fe::CutOptions cut_options() const {
+    return fe::CutOptions{scenario.numerics.cut_snap, scenario.numerics.cut_snap_distance_m};
+  }
 
   void initialize() {
     const int n = mesh.num_nodes();

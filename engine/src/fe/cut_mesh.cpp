@@ -166,8 +166,11 @@ CutData cut_data(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& o
     const double t = data.edge_cut[e];
     if (t < 0.0) continue;
     const mesh::GridEdge& g = mesh.edges[e];
-    if (t < options.snap) data.corner_sign[g.a] = 0;
-    else if (t > 1.0 - options.snap) data.corner_sign[g.b] = 0;
+    // The distance rule in the side's parameter: near 1 on a short side, small on a long one.
+    const double length = (mesh.nodes[g.b] - mesh.nodes[g.a]).norm();
+    const double snap = std::max(options.snap, length > 0.0 ? options.snap_distance_m / length : 0.0);
+    if (t < snap && t <= 1.0 - t) data.corner_sign[g.a] = 0;  // the nearer corner
+    else if (1.0 - t < snap) data.corner_sign[g.b] = 0;
   }
   for (int e = 0; e < n_edges; ++e) {
     const mesh::GridEdge& g = mesh.edges[e];

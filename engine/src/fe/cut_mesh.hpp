@@ -51,6 +51,8 @@ using LevelSet = std::function<double(const Vec2&)>;
 struct CutOptions {
   /// Cuts closer than snap * (side length) to a corner go through the corner.
   double snap = 1e-6;
+  /// Cuts closer than this distance [m] to a corner go through it as well (0: off).
+  double snap_distance_m = 0.0;
 };
 
 struct CutMesh {

@@ -102,6 +102,8 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   if (scenario.numerics.cip_wall_film_factor == defaults.cip_wall_film_factor)
     writer.object["numerics"].erase("cip_wall_film_factor");
   if (scenario.numerics.cut_snap == defaults.cut_snap) writer.object["numerics"].erase("cut_snap");
+  if (scenario.numerics.cut_snap_distance_m == defaults.cut_snap_distance_m)
+    writer.object["numerics"].erase("cut_snap_distance_m");
   if (scenario.numerics.cavitation_pressure_pa == defaults.cavitation_pressure_pa)
     writer.object["numerics"].erase("cavitation_pressure_pa");
   if (scenario.numerics.accept_flagged_reduction == defaults.accept_flagged_reduction)
