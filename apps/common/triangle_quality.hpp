@@ -3,8 +3,9 @@
 /// How well shaped the sub-elements of a FieldView are. Locally modified finite elements
 /// (Frei & Richter) keep the largest interior angle of every sub-triangle bounded on a
 /// square patch; in flat patches (the stairs' 4-8 mm rows, 5.6 cm wide) an interface
-/// crossing at a shallow angle makes triangles with angles near 180 degrees, and Newton
-/// stalls there (docs/solver.md). fsi-step's `quality` command reports this measure.
+/// crossing at a shallow angle makes triangles with angles near 180 degrees (the stairs'
+/// rho_f = 100 run failed where they reached 175: docs/solver.md). fsi-step's `quality`
+/// command reports this measure.
 #include <fsi/field_view.hpp>
 
 namespace fsi::app {
