@@ -9,8 +9,8 @@
 
 #include "frame_options.hpp"
 #include "functionals_json.hpp"
-#include "triangle_quality.hpp"
 #include "scenario_overrides.hpp"
+#include "triangle_quality.hpp"
 
 namespace fsi::app {
 namespace {
