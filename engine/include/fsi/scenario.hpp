@@ -64,9 +64,12 @@ struct SolidSpec {
 };
 
 /// What to do with a step whose Newton iteration did not converge within the budget.
+/// Whatever the policy, an attempt in which Newton never moved its iterate (no line
+/// search succeeded) is not kept: the step is rejected rather than advanced with the body
+/// frozen where it was.
 enum class FailurePolicy {
   accept_and_flag,   ///< keep the result, report converged = false
-  halve_step,        ///< retry with k/2 (up to max_halvings), then accept and flag
+  halve_step,        ///< retry with k/2 (up to max_halvings), then accept and flag the best
   stop_and_rollback  ///< restore the state before the step and report failure
 };
 

@@ -11,6 +11,8 @@
 #include "core/field_view_builder.hpp"
 #include "core/fsi_system.hpp"
 #include "core/functionals.hpp"
+#include "core/initial_guess.hpp"
+#include "core/step_policy.hpp"
 #include "fe/point_locator.hpp"
 #include "fsi/error.hpp"
 #include "interface/body.hpp"
@@ -106,22 +108,10 @@ struct Engine::Impl {
     newton.factorize_at(system, origin->iterate);
   }
 
-  /// Newton's start: the current solution, re-interpolated at the nodes that moved
-  /// between the current mesh and the new one. A moved node's old coefficient belongs to
-  /// another place; across a thin sub-element that inconsistency would show up as a huge
-  /// strain in the solid and stall Newton.
+  /// Newton's start on cut_next (core/initial_guess.hpp: moved nodes re-interpolated,
+  /// newly solid ones from the solid field).
   Eigen::VectorXd initial_guess() const {
-    Eigen::VectorXd x = state.solution;
-    for (int n = 0; n < mesh.num_nodes(); ++n) {
-      if (cut_next.x[n] == cut_cur.x[n]) continue;
-      const fe::Location loc = fe::locate(cut_cur, buckets, cut_next.x[n], 1e-6);
-      if (loc.element < 0) continue;
-      for (int f = 0; f < kFieldsPerNode; ++f)
-        x[kFieldsPerNode * n + f] = fe::evaluate(cut_cur, loc, state.solution, kFieldsPerNode, f);
-    }
-    for (int n = 0; n < mesh.num_nodes(); ++n)
-      if (mesh.on_wall[n]) x.segment(kFieldsPerNode * n, 2).setZero();
-    return x;
+    return core::initial_guess(mesh, buckets, cut_cur, cut_next, state.solution);
   }
 
   interface::MappingOptions mapping_options(double k) const {
@@ -240,10 +230,11 @@ struct Engine::Impl {
     double k = scenario.numerics.time_step_s;
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
-    // start) is kept: when every halving fails too, that one is accepted and flagged,
-    // never simply the last (after real contact smaller steps can do worse).
+    // start, both in one row scale) is kept: when every halving fails too, that one is
+    // accepted and flagged, never simply the last (after real contact smaller steps can do
+    // worse). What counts as an attempt to keep: core::judge_attempt.
     Eigen::VectorXd best_x;
-    std::string policy_note;  // why an unconverged step was accepted as it is
+    std::string policy_note;  // why an unconverged step was accepted as it is, or rejected
     double best_k = k, best_reduction = std::numeric_limits<double>::infinity();
     ResidualPeak best_peak;
     for (int attempt_no = 0;; ++attempt_no) {
@@ -252,50 +243,47 @@ struct Engine::Impl {
       const bool finite = !r.non_finite && x.allFinite();
       report.largest_residual = residual_peak(r);
       report.converged = r.converged && finite;
-      if (report.converged || (finite && scenario.numerics.failure_policy == FailurePolicy::accept_and_flag)) {
+      const core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, attempt_no, best_x.size() > 0);
+      if (verdict.candidate && r.relative_residual < best_reduction) {
+        best_reduction = r.relative_residual;
+        best_x = x;
+        best_k = k;
+        best_peak = report.largest_residual;
+      }
+      if (verdict.action == core::AttemptAction::accept) {
         accept(std::move(x), k, std::move(quad), report);
         report.accepted = true;
+        if (verdict.flagged_early) {
+          std::ostringstream why;
+          why << "accepted without halving: residual at " << r.relative_residual
+              << " of its start (accept_flagged_reduction)";
+          policy_note = why.str();
+        }
         break;
       }
-      if (finite && scenario.numerics.failure_policy == FailurePolicy::halve_step &&
-          r.relative_residual <= scenario.numerics.accept_flagged_reduction) {
-        // Stalled just short of the tolerance: smaller steps would stall alike.
-        accept(std::move(x), k, std::move(quad), report);
-        report.accepted = true;
-        std::ostringstream why;
-        why << "accepted without halving: residual at " << r.relative_residual
-            << " of its start (accept_flagged_reduction)";
-        policy_note = why.str();
-        break;
+      if (verdict.action == core::AttemptAction::retry_halved) {
+        k *= 0.5;
+        report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
+                                 "Newton did not converge: retrying with k = " + std::to_string(k)});
+        continue;
       }
-      if (finite && scenario.numerics.failure_policy == FailurePolicy::halve_step) {
-        const double reduction = r.norms.empty() ? 1.0 : r.norms.back() / std::max(r.norms.front(), 1e-300);
-        if (reduction < best_reduction) {
-          best_reduction = reduction;
-          best_x = x;
-          best_k = k;
-          best_peak = report.largest_residual;
-        }
-        if (attempt_no < scenario.numerics.max_halvings) {
-          k *= 0.5;
-          report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
-                                   "Newton did not converge: retrying with k = " + std::to_string(k)});
-          continue;
-        }
-      }
-      if (best_x.size() > 0) {
+      if (verdict.action == core::AttemptAction::accept_best) {
         k = best_k;
         report.largest_residual = best_peak;
         accept(std::move(best_x), k, std::move(quad), report);
         report.accepted = true;
         break;
       }
-      // stop_and_rollback, or a non-finite result (NaN/Inf never leaves the engine).
+      // give_up: stop_and_rollback, no attempt that moved Newton's iterate, or a
+      // non-finite result (NaN/Inf never leaves the engine).
       report.accepted = false;
+      std::string why = "rolled back to the state before the step";
+      if (finite && !core::made_progress(r) && scenario.numerics.failure_policy != FailurePolicy::stop_and_rollback)
+        why = "Newton made no progress (no iterate reduced the residual; accepting would freeze the body): " + why;
       report.events.push_back({finite ? StepEvent::Kind::rolled_back : StepEvent::Kind::non_finite,
                                state.time_s, {}, -1,
-                               finite ? "rolled back to the state before the step"
-                                      : "non-finite values: step rejected, state rolled back"});
+                               finite ? why : "non-finite values: step rejected, state rolled back"});
+      if (finite && !core::made_progress(r)) policy_note = "Newton made no progress";
       break;
     }
     if (system.max_contact_pressure() > 0.0)

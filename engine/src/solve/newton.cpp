@@ -114,6 +114,7 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
                     (trial > tol && !fresh && trial * std::pow(rate, remaining) > tol);
     x.swap(x_try);
     r.swap(r_try);
+    ++result.accepted_iterates;
     current = trial;
     fresh = false;
     result.norms.push_back(current);

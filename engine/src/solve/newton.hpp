@@ -35,6 +35,8 @@ struct NewtonResult {
   bool non_finite = false;
   bool singular = false;
   int iterations = 0;
+  /// Iterates the line search accepted (0: x is still the start, nothing was solved).
+  int accepted_iterates = 0;
   int factorizations = 0;
   std::vector<double> norms;  ///< scaled residual norm before each iteration and at the end
   /// The final residual over the step's first one, both measured with the row scale of the

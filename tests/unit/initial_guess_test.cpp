@@ -1,0 +1,87 @@
+// Newton's start on the new mesh (core/initial_guess.hpp). The rule of session 15: a
+// node the body newly covers takes v and u from the solid field, not from the fluid's
+// extension, which near a thin solid sub-element made det(I - grad u) <= 0.
+#include "core/initial_guess.hpp"
+
+#include <gtest/gtest.h>
+
+#include "fsi/state.hpp"
+#include "interface/body.hpp"
+#include "mesh/patch_mesh.hpp"
+#include "test_scenarios.hpp"
+
+namespace {
+
+using fsi::mesh::Vec2;
+
+TEST(InitialGuess, NewlySolidNodesTakeTheSolidFieldNotTheFluidExtension) {
+  const fsi::Scenario s = fsi::testing::coarse_example1();
+  const auto mesh = fsi::mesh::build_patch_mesh(s.mesh, s.walls);
+  const fsi::fe::PatchBuckets buckets(mesh);
+  auto ball_at = [&](const Vec2& shift) {
+    return fsi::fe::build_cut_mesh(mesh, [&, shift](const Vec2& x) {
+      return fsi::interface::initial_distance(s.body, x - shift);
+    });
+  };
+  // The body moves down by 0.6 of a patch height between the two meshes.
+  const double patch_h = std::abs(mesh.nodes[mesh.patches[0].node[6]].y() - mesh.nodes[mesh.patches[0].node[0]].y());
+  const fsi::fe::CutMesh current = ball_at({0.0, 0.0}), next = ball_at({0.0, -0.6 * patch_h});
+  // A rigid rotation of 0.8 rad plus a translation in the solid (linear in x), and a
+  // different field -- zero -- in the fluid, standing for its harmonic extension.
+  const double c = std::cos(0.8), sn = std::sin(0.8);
+  Eigen::Matrix2d grad_u;
+  grad_u << 1.0 - c, -sn, sn, 1.0 - c;
+  const Vec2 u0(0.3, -0.2);
+  auto solid_u = [&](const Vec2& x) { return Vec2(grad_u * x + u0); };
+  auto solid_v = [&](const Vec2& x) { return Vec2(0.5 - 2.0 * x.y(), -0.4 + 2.0 * x.x()); };
+  Eigen::VectorXd solution = Eigen::VectorXd::Zero(fsi::kFieldsPerNode * mesh.num_nodes());
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    if (!current.touches_solid[n]) continue;
+    const Vec2 u = solid_u(current.x[n]), v = solid_v(current.x[n]);
+    solution.segment(fsi::kFieldsPerNode * n, 4) << v.x(), v.y(), u.x(), u.y();
+  }
+  fsi::core::InitialGuessStats stats;
+  const Eigen::VectorXd x = fsi::core::initial_guess(mesh, buckets, current, next, solution, &stats);
+  // Nodes in the body on the new mesh whose place lies inside a fluid sub-element of the
+  // current one: interpolation there would give the fluid's values (zero here).
+  int newly_solid = 0, exact = 0;
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    if (!next.touches_solid[n] || mesh.on_wall[n]) continue;
+    const fsi::fe::Location loc = fsi::fe::locate(current, buckets, next.x[n], 1e-6);
+    if (loc.element < 0 || current.elements[loc.element].phase != fsi::Phase::fluid) continue;
+    ++newly_solid;
+    const Vec2 u = solid_u(next.x[n]), v = solid_v(next.x[n]);
+    const Eigen::Vector4d want(v.x(), v.y(), u.x(), u.y());
+    if ((x.segment(fsi::kFieldsPerNode * n, 4) - want).norm() < 1e-9) ++exact;
+  }
+  ASSERT_GT(newly_solid, 5) << "the move must cover nodes that were in the fluid";
+  EXPECT_GT(stats.extrapolated_nodes, 5);
+  // Nodes in patches without any solid sub-element yet keep the interpolated value.
+  EXPECT_GE(exact, 0.8 * newly_solid) << exact << " of " << newly_solid;
+  // Nodes of the body on both meshes that moved: interpolated in the solid, exact too.
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    if (next.x[n] == current.x[n] || !current.touches_solid[n] || !next.touches_solid[n] || mesh.on_wall[n]) continue;
+    const fsi::fe::Location loc = fsi::fe::locate(current, buckets, next.x[n], 1e-6);
+    if (loc.element < 0 || current.elements[loc.element].phase != fsi::Phase::solid) continue;
+    EXPECT_NEAR(x[fsi::kFieldsPerNode * n + fsi::kUx], solid_u(next.x[n]).x(), 1e-9);
+  }
+}
+
+TEST(InitialGuess, UnchangedMeshGivesTheSolutionBackWithWallVelocitiesZero) {
+  const fsi::Scenario s = fsi::testing::coarse_example1();
+  const auto mesh = fsi::mesh::build_patch_mesh(s.mesh, s.walls);
+  const fsi::fe::PatchBuckets buckets(mesh);
+  const auto cut = fsi::fe::build_cut_mesh(mesh, [&](const Vec2& x) { return fsi::interface::initial_distance(s.body, x); });
+  Eigen::VectorXd solution = Eigen::VectorXd::LinSpaced(fsi::kFieldsPerNode * mesh.num_nodes(), -1.0, 1.0);
+  fsi::core::InitialGuessStats stats;
+  const Eigen::VectorXd x = fsi::core::initial_guess(mesh, buckets, cut, cut, solution, &stats);
+  EXPECT_EQ(stats.moved_nodes, 0);
+  EXPECT_EQ(stats.extrapolated_nodes, 0);
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    for (int f = 0; f < fsi::kFieldsPerNode; ++f) {
+      const double want = mesh.on_wall[n] && f < 2 ? 0.0 : solution[fsi::kFieldsPerNode * n + f];
+      ASSERT_EQ(x[fsi::kFieldsPerNode * n + f], want) << "node " << n << " field " << f;
+    }
+}
+
+}  // namespace
