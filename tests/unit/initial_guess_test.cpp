@@ -1,6 +1,7 @@
-// Newton's start on the new mesh (core/initial_guess.hpp). The rule of session 15: a
-// node the body newly covers takes v and u from the solid field, not from the fluid's
-// extension, which near a thin solid sub-element made det(I - grad u) <= 0.
+// Newton's start on the new mesh (core/initial_guess.hpp). The rule of session 15: where
+// the interpolated start deforms a solid sub-element beyond any physical state, its nodes
+// that lay in the fluid take v and u from the solid field, not from the fluid's
+// extension (near a thin solid sub-element that had made det(I - grad u) <= 0).
 #include "core/initial_guess.hpp"
 
 #include <gtest/gtest.h>
@@ -26,8 +27,9 @@ TEST(InitialGuess, NewlySolidNodesTakeTheSolidFieldNotTheFluidExtension) {
   // The body moves down by 0.6 of a patch height between the two meshes.
   const double patch_h = std::abs(mesh.nodes[mesh.patches[0].node[6]].y() - mesh.nodes[mesh.patches[0].node[0]].y());
   const fsi::fe::CutMesh current = ball_at({0.0, 0.0}), next = ball_at({0.0, -0.6 * patch_h});
-  // A rigid rotation of 0.8 rad plus a translation in the solid (linear in x), and a
-  // different field -- zero -- in the fluid, standing for its harmonic extension.
+  // A rigid rotation of 0.8 rad plus a translation in the solid (linear in x), and in the
+  // fluid a field no solid could have (u = 5 x: det(I - grad u) = 16), standing for an
+  // extension that does not continue the solid's field.
   const double c = std::cos(0.8), sn = std::sin(0.8);
   Eigen::Matrix2d grad_u;
   grad_u << 1.0 - c, -sn, sn, 1.0 - c;
@@ -36,14 +38,14 @@ TEST(InitialGuess, NewlySolidNodesTakeTheSolidFieldNotTheFluidExtension) {
   auto solid_v = [&](const Vec2& x) { return Vec2(0.5 - 2.0 * x.y(), -0.4 + 2.0 * x.x()); };
   Eigen::VectorXd solution = Eigen::VectorXd::Zero(fsi::kFieldsPerNode * mesh.num_nodes());
   for (int n = 0; n < mesh.num_nodes(); ++n) {
-    if (!current.touches_solid[n]) continue;
-    const Vec2 u = solid_u(current.x[n]), v = solid_v(current.x[n]);
+    const Vec2 u = current.touches_solid[n] ? solid_u(current.x[n]) : Vec2(5.0 * current.x[n]);
+    const Vec2 v = current.touches_solid[n] ? solid_v(current.x[n]) : Vec2::Zero();
     solution.segment(fsi::kFieldsPerNode * n, 4) << v.x(), v.y(), u.x(), u.y();
   }
   fsi::core::InitialGuessStats stats;
   const Eigen::VectorXd x = fsi::core::initial_guess(mesh, buckets, current, next, solution, &stats);
   // Nodes in the body on the new mesh whose place lies inside a fluid sub-element of the
-  // current one: interpolation there would give the fluid's values (zero here).
+  // current one: interpolation there would give the fluid's values (u = 5 x here).
   int newly_solid = 0, exact = 0;
   for (int n = 0; n < mesh.num_nodes(); ++n) {
     if (!next.touches_solid[n] || mesh.on_wall[n]) continue;

@@ -109,9 +109,10 @@ struct Engine::Impl {
   }
 
   /// Newton's start on cut_next (core/initial_guess.hpp: moved nodes re-interpolated,
-  /// newly solid ones from the solid field).
+  /// the solid field where that start would be unphysical).
   Eigen::VectorXd initial_guess() const {
-    return core::initial_guess(mesh, buckets, cut_cur, cut_next, state.solution);
+    return core::initial_guess(mesh, buckets, cut_cur, cut_next, state.solution, nullptr,
+                               core::StartMode::repair_unphysical);
   }
 
   interface::MappingOptions mapping_options(double k) const {

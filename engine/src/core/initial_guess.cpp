@@ -1,12 +1,16 @@
 #include "core/initial_guess.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "fsi/state.hpp"
 
 namespace fsi::core {
 namespace {
 
-/// The largest solid sub-element of patch p in `cut` (-1: none).
-int largest_solid_element(const fe::CutMesh& cut, int p) {
+/// The solid sub-element of patch p to continue the field from: the largest, since
+/// extrapolating a sliver magnifies the sliver's own errors (-1: none).
+int solid_element_for(const fe::CutMesh& cut, int p) {
   int best = -1;
   double best_area = 0.0;
   for (int k = cut.first_element[p]; k < cut.first_element[p + 1]; ++k) {
@@ -18,6 +22,22 @@ int largest_solid_element(const fe::CutMesh& cut, int p) {
     }
   }
   return best;
+}
+
+/// det(I - grad u) at the centre of solid sub-element e within [1/2, 2].
+bool physical_deformation(const fe::CutMesh& cut, const fe::SubElement& e, const Eigen::VectorXd& x) {
+  const double centre = e.vertices == 3 ? 1.0 / 3.0 : 0.5;
+  const double det = deformation_determinant(e, fe::shape_at_reference(cut, e, centre, centre), x);
+  return det >= 0.5 && det <= 2.0;
+}
+
+/// Wall nodes keep their (zero) velocity.
+Eigen::VectorXd finish(const mesh::PatchMesh& mesh, Eigen::VectorXd& x, const InitialGuessStats& counts,
+                       InitialGuessStats* stats) {
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    if (mesh.on_wall[n]) x.segment(kFieldsPerNode * n, 2).setZero();
+  if (stats) *stats = counts;
+  return std::move(x);
 }
 
 /// True when patch p is cut into the same sub-elements on both meshes.
@@ -38,7 +58,7 @@ bool patch_unchanged(const mesh::PatchMesh& mesh, const fe::CutMesh& a, const fe
 /// The solid field of `element` continued to x (its shape functions evaluated outside
 /// the element: linear for triangles, bilinear for quads). False if x has no reference
 /// coordinates for it.
-bool extrapolate_solid(const fe::CutMesh& cut, int element, const mesh::Vec2& x, const Eigen::VectorXd& solution,
+bool continue_solid_field(const fe::CutMesh& cut, int element, const mesh::Vec2& x, const Eigen::VectorXd& solution,
                        Eigen::Ref<Eigen::VectorXd> node_values) {
   double xi = 0.0, eta = 0.0;
   if (!fe::reference_coordinates(cut, cut.elements[element], x, xi, eta)) return false;
@@ -51,37 +71,52 @@ bool extrapolate_solid(const fe::CutMesh& cut, int element, const mesh::Vec2& x,
 
 }  // namespace
 
+double deformation_determinant(const fe::SubElement& e, const fe::ShapeValues& s, const Eigen::VectorXd& x) {
+  double h[2][2] = {{0.0, 0.0}, {0.0, 0.0}};  // grad u
+  for (int a = 0; a < e.vertices; ++a)
+    for (int c = 0; c < 2; ++c) {
+      h[c][0] += s.grad[a].x() * x[kFieldsPerNode * e.node[a] + kUx + c];
+      h[c][1] += s.grad[a].y() * x[kFieldsPerNode * e.node[a] + kUx + c];
+    }
+  return (1.0 - h[0][0]) * (1.0 - h[1][1]) - h[0][1] * h[1][0];
+}
+
 Eigen::VectorXd initial_guess(const mesh::PatchMesh& mesh, const fe::PatchBuckets& buckets,
                               const fe::CutMesh& current, const fe::CutMesh& next,
-                              const Eigen::VectorXd& solution, InitialGuessStats* stats) {
+                              const Eigen::VectorXd& solution, InitialGuessStats* stats, StartMode mode) {
   InitialGuessStats counts;
   Eigen::VectorXd x = solution;
+  // Where each node lies on the current mesh (-1: not looked up, or outside).
+  std::vector<int> located(mesh.num_nodes(), -1);
   for (int n = 0; n < mesh.num_nodes(); ++n) {
     const bool moved = next.x[n] != current.x[n];
     if (!moved && !next.touches_solid[n]) continue;
     const fe::Location loc = fe::locate(current, buckets, next.x[n], 1e-6);
     if (loc.element < 0) continue;
-    if (moved) {
-      for (int f = 0; f < kFieldsPerNode; ++f)
-        x[kFieldsPerNode * n + f] = fe::evaluate(current, loc, solution, kFieldsPerNode, f);
-      ++counts.moved_nodes;
-    }
-    // In the body on the new mesh, but in a fluid sub-element of the current one: the
-    // solid field, not the fluid's extension. Also for a node that touched the body
-    // before only through slivers: its value need not continue the solid's field, and
-    // next to a larger solid sub-element that matters (rho_f = 1000, t = 8.389 s: a node
-    // at the ball's top).
-    if (!next.touches_solid[n] || current.elements[loc.element].phase == Phase::solid) continue;
-    const int patch = current.elements[loc.element].patch;
+    located[n] = loc.element;
+    if (!moved) continue;
+    for (int f = 0; f < kFieldsPerNode; ++f)
+      x[kFieldsPerNode * n + f] = fe::evaluate(current, loc, solution, kFieldsPerNode, f);
+    ++counts.moved_nodes;
+  }
+  if (mode == StartMode::interpolated) return finish(mesh, x, counts, stats);
+  // repair_unphysical: only the nodes of solid sub-elements that the interpolated start
+  // deforms beyond any physical state (det(I - grad u) outside [1/2, 2] at the centre).
+  std::vector<char> wanted(mesh.num_nodes(), mode == StartMode::solid_field);
+  if (mode == StartMode::repair_unphysical)
+    for (const fe::SubElement& e : next.elements)
+      if (e.phase == Phase::solid && !physical_deformation(next, e, x))
+        for (int i = 0; i < e.vertices; ++i) wanted[e.node[i]] = 1;
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    if (!wanted[n] || !next.touches_solid[n] || located[n] < 0) continue;
+    if (current.elements[located[n]].phase == Phase::solid) continue;
+    const int patch = current.elements[located[n]].patch;
     if (patch_unchanged(mesh, current, next, patch)) continue;  // the last step solved on these
-    const int solid = largest_solid_element(current, patch);
-    if (solid >= 0 && extrapolate_solid(current, solid, next.x[n], solution, x.segment(kFieldsPerNode * n, kFieldsPerNode)))
+    const int solid = solid_element_for(current, patch);
+    if (solid >= 0 && continue_solid_field(current, solid, next.x[n], solution, x.segment(kFieldsPerNode * n, kFieldsPerNode)))
       ++counts.extrapolated_nodes;
   }
-  for (int n = 0; n < mesh.num_nodes(); ++n)
-    if (mesh.on_wall[n]) x.segment(kFieldsPerNode * n, 2).setZero();
-  if (stats) *stats = counts;
-  return x;
+  return finish(mesh, x, counts, stats);
 }
 
 }  // namespace fsi::core
