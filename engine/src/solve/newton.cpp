@@ -5,9 +5,6 @@
 
 namespace fsi::solve {
 namespace {
-constexpr int kStaleLineSearchHalvings = 3;
-constexpr int kFreshLineSearchHalvings = 10;
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -93,14 +90,8 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     auto t0 = std::chrono::steady_clock::now();
     const Eigen::VectorXd dx = -lu_->solve(r);
     result.solve_seconds += seconds_since(t0);
-    // A stale factorization's direction is worth only a short search (3 halvings): if it
-    // fails, refactorizing is the better bet. The exact Jacobian's direction is a descent
-    // direction, so its search goes on to 1/1024: beside a corner of the stairs (rho_f =
-    // 100, t = 8.151 s) Newton needs four iterations at 1/8-1/64 of its step before it
-    // converges, and stopping at 1/8 failed the step (session 15).
-    const int halvings = fresh ? kFreshLineSearchHalvings : kStaleLineSearchHalvings;
     double lambda = 1.0, trial = 0.0;
-    for (int halving = 0; halving <= halvings; ++halving, lambda *= 0.5) {
+    for (int halving = 0; halving < 4; ++halving, lambda *= 0.5) {
       x_try = x + lambda * dx;
       t0 = std::chrono::steady_clock::now();
       system.residual(x_try, r_try);

@@ -8,8 +8,7 @@
 /// factorization is therefore kept across iterations and time steps while it still
 /// contracts the residual by `reuse_contraction` per iteration; when it does not, the
 /// Jacobian is re-assembled at the current iterate and refactorized. A backtracking
-/// line search guards against overshooting (up to 3 halvings with a reused factorization,
-/// 10 with a fresh one).
+/// line search (up to 3 halvings) guards against overshooting.
 ///
 /// Residual norm: max_i |R_i| / max_j |J_ij| (rows scaled by the Jacobian of the last
 /// factorization): comparable across the velocity, displacement and pressure rows. The
