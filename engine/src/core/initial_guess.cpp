@@ -1,6 +1,6 @@
 #include "core/initial_guess.hpp"
 
-#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "fsi/state.hpp"
