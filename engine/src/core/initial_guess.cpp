@@ -86,15 +86,14 @@ Eigen::VectorXd initial_guess(const mesh::PatchMesh& mesh, const fe::PatchBucket
                               const Eigen::VectorXd& solution, InitialGuessStats* stats, StartMode mode) {
   InitialGuessStats counts;
   Eigen::VectorXd x = solution;
-  // Where each node lies on the current mesh (-1: not looked up, or outside).
+  // Where each node lies on the current mesh (-1: not looked up, or outside). Only moved
+  // nodes are looked up here; the others only if the repair below wants them.
   std::vector<int> located(mesh.num_nodes(), -1);
   for (int n = 0; n < mesh.num_nodes(); ++n) {
-    const bool moved = next.x[n] != current.x[n];
-    if (!moved && !next.touches_solid[n]) continue;
+    if (next.x[n] == current.x[n]) continue;
     const fe::Location loc = fe::locate(current, buckets, next.x[n], 1e-6);
     if (loc.element < 0) continue;
     located[n] = loc.element;
-    if (!moved) continue;
     for (int f = 0; f < kFieldsPerNode; ++f)
       x[kFieldsPerNode * n + f] = fe::evaluate(current, loc, solution, kFieldsPerNode, f);
     ++counts.moved_nodes;
@@ -108,7 +107,10 @@ Eigen::VectorXd initial_guess(const mesh::PatchMesh& mesh, const fe::PatchBucket
       if (e.phase == Phase::solid && !physical_deformation(next, e, x))
         for (int i = 0; i < e.vertices; ++i) wanted[e.node[i]] = 1;
   for (int n = 0; n < mesh.num_nodes(); ++n) {
-    if (!wanted[n] || !next.touches_solid[n] || located[n] < 0) continue;
+    if (!wanted[n] || !next.touches_solid[n]) continue;
+    if (located[n] < 0 && next.x[n] == current.x[n])
+      located[n] = fe::locate(current, buckets, next.x[n], 1e-6).element;
+    if (located[n] < 0) continue;
     if (current.elements[located[n]].phase == Phase::solid) continue;
     const int patch = current.elements[located[n]].patch;
     if (patch_unchanged(mesh, current, next, patch)) continue;  // the last step solved on these
