@@ -65,7 +65,8 @@ class FsiSystem {
   const fe::CutMesh* cut_ = nullptr;
   const fe::QuadratureTable* quadrature_ = nullptr;
   std::vector<forms::OldValues> old_;
-  solve::SparseMatrix cip_;                        ///< S_aniso on the p-p block
+  solve::SparseMatrix cip_;                        ///< S_aniso on the p-p block, node by node
+  std::vector<int> cip_position_;                  ///< value index in pattern_ of each cip_ entry
   std::vector<int> entry_first_;                   ///< per element: offset into entry_
   std::vector<int> entry_;                         ///< value index of (local i, local j)
   std::vector<int> open_first_;                    ///< per element: offset into open_sides_

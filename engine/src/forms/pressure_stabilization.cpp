@@ -7,11 +7,6 @@
 namespace fsi::forms {
 namespace {
 
-void add(solve::SparseMatrix& a, int row, int col, double v) {
-  const int k = solve::value_index(a, row, col);
-  if (k >= 0) a.valuePtr()[k] += v;
-}
-
 /// Smallest height of a sub-element [m]: 2|K| / longest side (triangle), |K| / longest side (quad).
 double smallest_height(const fe::CutMesh& cut, const fe::SubElement& e) {
   double longest = 0.0;
@@ -48,6 +43,31 @@ void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& 
         if (e.phase != Phase::fluid || !touches_wall(mesh, e)) continue;
         film[s] = scaling(std::min(hp, wall_film_factor * smallest_height(cut, e))) / scaling(hp);
       }
+    // The value positions of the pairs this edge couples, found once for both quadrature
+    // points (this runs every step over every edge; the searches dominated it). -1: the
+    // pattern lacks the pair (such a contribution is dropped, as before).
+    std::array<std::array<int, 16>, 2> side_at{};  // cut patch: per side, (i, j) of <= 4 nodes
+    std::array<int, 64> jump_at{};                   // else: (i, j) of <= 8 nodes
+    auto position = [&](int ni, int nj) { return solve::value_index(a, stride * ni + field, stride * nj + field); };
+    if (se.in_cut_patch) {
+      for (int s = 0; s < 2; ++s) {
+        const fe::SubElement& e = s == 0 ? e1 : e2;
+        if (e.phase != Phase::fluid) continue;
+        for (int i = 0; i < e.vertices; ++i)
+          for (int j = 0; j < e.vertices; ++j) side_at[s][i * e.vertices + j] = position(e.node[i], e.node[j]);
+      }
+    } else if (fluid1 && fluid2) {
+      std::array<int, 8> node{};
+      int n = 0;
+      for (int i = 0; i < e1.vertices; ++i) node[n++] = e1.node[i];
+      for (int i = 0; i < e2.vertices; ++i) node[n++] = e2.node[i];
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) jump_at[i * n + j] = position(node[i], node[j]);
+    }
+    double* value = a.valuePtr();
+    auto add_at = [value](int at, double v) {
+      if (at >= 0) value[at] += v;
+    };
     for (int q = 0; q < 2; ++q) {
       const double w = scale * se.weight[q];
       if (se.in_cut_patch) {
@@ -59,8 +79,7 @@ void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& 
           const double f = 0.5 * w * film[s] * (s == 0 ? se.hn1_m : se.hn2_m);
           for (int i = 0; i < e.vertices; ++i)
             for (int j = 0; j < e.vertices; ++j)
-              add(a, stride * e.node[i] + field, stride * e.node[j] + field,
-                  f * sv.grad[i].dot(sv.grad[j]));
+              add_at(side_at[s][i * e.vertices + j], f * sv.grad[i].dot(sv.grad[j]));
         }
       } else {
         if (!(fluid1 && fluid2)) continue;
@@ -78,8 +97,7 @@ void add_pressure_stabilization(const mesh::PatchMesh& mesh, const fe::CutMesh& 
         }
         const double f = w * 0.5 * (se.hn1_m + se.hn2_m);
         for (int i = 0; i < n; ++i)
-          for (int j = 0; j < n; ++j)
-            add(a, stride * node[i] + field, stride * node[j] + field, f * jump[i].dot(jump[j]));
+          for (int j = 0; j < n; ++j) add_at(jump_at[i * n + j], f * jump[i].dot(jump[j]));
       }
     }
   }
