@@ -19,7 +19,7 @@ int halvings(const fsi::StepReport& r) {
 
 /// Example 1 falling for a few steps, then with a budget of one Newton iteration per
 /// attempt: no step can converge, and the one iteration takes the residual well down.
-fsi::Engine one_iteration_per_attempt(double accept_flagged_reduction) {
+fsi::Engine one_iteration_per_attempt(double accept_flagged_reduction, double accept_flagged_max_residual = 1e6) {
   const fsi::Scenario s = fsi::testing::coarse_example1();
   fsi::Engine engine(s);
   for (int i = 0; i < 5; ++i) EXPECT_TRUE(engine.step().converged);
@@ -28,6 +28,7 @@ fsi::Engine one_iteration_per_attempt(double accept_flagged_reduction) {
   n.failure_policy = fsi::FailurePolicy::halve_step;
   n.max_halvings = 2;
   n.accept_flagged_reduction = accept_flagged_reduction;
+  n.accept_flagged_max_residual = accept_flagged_max_residual;
   engine.set_numerics(n);
   return engine;
 }
@@ -59,6 +60,16 @@ TEST(FailurePolicy, AStepThatDidNotGetFarEnoughDownIsStillHalved) {
   const fsi::StepReport r = engine.step();
   EXPECT_FALSE(r.converged);
   EXPECT_EQ(halvings(r), 2) << r.message;
+}
+
+TEST(FailurePolicy, AStepFarDownFromAHugeStartIsStillHalved) {
+  // Far enough down relatively (0.5), but its final residual is above the absolute bound:
+  // halved as a failed step (session 16, real contact at a corner).
+  fsi::Engine engine = one_iteration_per_attempt(0.5, 1e-30);
+  const fsi::StepReport r = engine.step();
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(halvings(r), 2) << r.message;
+  EXPECT_EQ(r.message.find("accept_flagged_reduction"), std::string::npos) << r.message;
 }
 
 TEST(FailurePolicy, AnUnconvergedStepSaysWhereItsResidualIsLargest) {

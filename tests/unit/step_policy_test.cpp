@@ -10,8 +10,10 @@ namespace {
 using fsi::core::AttemptAction;
 using fsi::core::judge_attempt;
 
-fsi::solve::NewtonResult attempt(bool converged, int accepted_iterates, double relative_residual) {
+fsi::solve::NewtonResult attempt(bool converged, int accepted_iterates, double relative_residual,
+                                 double final_residual = 1e-9) {
   fsi::solve::NewtonResult r;
+  r.norms = {final_residual / relative_residual, final_residual};
   r.converged = converged;
   r.accepted_iterates = accepted_iterates;
   r.iterations = accepted_iterates + 1;
@@ -67,6 +69,13 @@ TEST(StepPolicy, AcceptFlaggedReductionAcceptsAtOnceOnlyAttemptsThatGotFarEnough
   EXPECT_EQ(v.action, AttemptAction::accept);
   EXPECT_TRUE(v.flagged_early);
   EXPECT_EQ(judge_attempt(n, attempt(false, 7, 5e-3), true, 0, false).action, AttemptAction::retry_halved);
+  // Far down from a huge start but nowhere near a solution (step 288 of the corner probe,
+  // session 16: 74 -> 8.2e-4): halved, not accepted.
+  EXPECT_EQ(n.accept_flagged_max_residual, 1e-4);
+  v = judge_attempt(n, attempt(false, 17, 1.1e-5, 8.2e-4), true, 0, false);
+  EXPECT_EQ(v.action, AttemptAction::retry_halved);
+  EXPECT_FALSE(v.flagged_early);
+  EXPECT_TRUE(v.candidate);
 }
 
 TEST(StepPolicy, StopAndRollbackRejectsEveryUnconvergedAttempt) {

@@ -90,6 +90,12 @@ struct NumericsSpec {
   /// smaller steps stall alike and only multiply the cost; a step that really failed
   /// (a reduction of 0.3, say) is still retried.
   double accept_flagged_reduction = 0.0;
+  /// ... and only if its final scaled residual is at or below this (ours; session 16).
+  /// A step whose start was far off (real contact at a corner: 74 or 1e7) gets down by 1e-5
+  /// of it and still ends at 8e-4 or 6e-2, no solution: accepted, such steps broke the body
+  /// within three steps, while halved they converged. Stalls near the tolerance (1e-7 ..
+  /// 1e-4) are still accepted at once.
+  double accept_flagged_max_residual = 1.0e-4;
 
   double cip_gamma = 0.05;        ///< gamma of S_aniso (scaled by 1/(rho_f nu_f))
   /// Weight w of the transient term in the CIP scaling gamma h^2 / (rho_f nu_f + w rho_f h^2 / k)

@@ -257,7 +257,8 @@ struct Engine::Impl {
         if (verdict.flagged_early) {
           std::ostringstream why;
           why << "accepted without halving: residual at " << r.relative_residual
-              << " of its start (accept_flagged_reduction)";
+              << " of its start (accept_flagged_reduction), " << r.norms.back()
+              << " scaled (accept_flagged_max_residual)";
           policy_note = why.str();
         }
         break;

@@ -1,5 +1,7 @@
 #include "core/step_policy.hpp"
 
+#include <limits>
+
 namespace fsi::core {
 
 AttemptVerdict judge_attempt(const NumericsSpec& numerics, const solve::NewtonResult& r, bool finite,
@@ -20,8 +22,11 @@ AttemptVerdict judge_attempt(const NumericsSpec& numerics, const solve::NewtonRe
     case FailurePolicy::halve_step:
       break;
   }
-  if (usable && r.relative_residual <= numerics.accept_flagged_reduction) {
-    // Stalled just short of the tolerance: smaller steps would stall alike.
+  const double final_residual = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.back();
+  if (usable && r.relative_residual <= numerics.accept_flagged_reduction &&
+      final_residual <= numerics.accept_flagged_max_residual) {
+    // Stalled just short of the tolerance: smaller steps would stall alike. (Far down
+    // from a huge start is not short of the tolerance: that one is halved.)
     v.action = AttemptAction::accept;
     v.flagged_early = true;
     return v;

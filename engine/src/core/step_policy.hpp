@@ -28,7 +28,8 @@ struct AttemptVerdict {
   /// halve_step: this attempt may be accepted later if no other does better.
   bool candidate = false;
   /// Accepted although unconverged because its residual got down to
-  /// accept_flagged_reduction of its start (the step report says so).
+  /// accept_flagged_reduction of its start and to accept_flagged_max_residual (the step
+  /// report says so).
   bool flagged_early = false;
 };
 

@@ -12,9 +12,9 @@ namespace fsi::io {
 /// Numerics keys that only steer the nonlinear solver (how many Newton iterations, when to
 /// stop, what to do on failure). They are not part of the fingerprint since checkpoint
 /// format 4: the same state may go on with other solver controls.
-inline constexpr std::array<const char*, 7> kSolverControlKeys{
-    "newton_budget",  "newton_rel_tol", "newton_abs_tol",          "reuse_contraction",
-    "failure_policy", "max_halvings",   "accept_flagged_reduction"};
+inline constexpr std::array<const char*, 8> kSolverControlKeys{
+    "newton_budget",  "newton_rel_tol", "newton_abs_tol",           "reuse_contraction",
+    "failure_policy", "max_halvings",   "accept_flagged_reduction", "accept_flagged_max_residual"};
 
 /// The fingerprint as checkpoint format 3 computed it (solver controls included); a
 /// format 3 checkpoint loads when this matches.

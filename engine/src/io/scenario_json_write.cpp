@@ -108,6 +108,8 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
     writer.object["numerics"].erase("cavitation_pressure_pa");
   if (scenario.numerics.accept_flagged_reduction == defaults.accept_flagged_reduction)
     writer.object["numerics"].erase("accept_flagged_reduction");
+  if (scenario.numerics.accept_flagged_max_residual == defaults.accept_flagged_max_residual)
+    writer.object["numerics"].erase("accept_flagged_max_residual");
   return std::move(writer.object);
 }
 
