@@ -2,6 +2,7 @@
 #include "movie_run.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <fsi/engine.hpp>
@@ -91,7 +92,12 @@ class MovieRun {
 
   MovieResult run() {
     const Scenario& s = engine_.scenario();
-    const int frame_every = s.output.frame_every;
+    // Frames at equal intervals of simulated time, so that a movie plays at one speed when
+    // steps vary in length (time_step_max_s, halved steps): every frame_every-th step at
+    // a constant k.
+    const double frame_interval_s = s.output.frame_every * s.numerics.time_step_s;
+    const auto frame_index = [&](double t) { return static_cast<long>(std::floor((t + 0.5 * s.numerics.time_step_s) / frame_interval_s)); };
+    long last_frame_index = frame_index(engine_.state().time_s);
     write_frame();
     // Whether the state the loop stops at is worth continuing from (checkpointed below).
     bool resumable_stop = false;
@@ -130,7 +136,10 @@ class MovieRun {
         summary_.set_stop_reason(why);
         break;
       }
-      if (st.step % frame_every == 0) write_frame();
+      if (const long i = frame_index(st.time_s); i > last_frame_index) {
+        last_frame_index = i;
+        write_frame();
+      }
       if (options_.checkpoint_every > 0 && st.step % options_.checkpoint_every == 0)
         write_checkpoint(st.step);
       meter_.update(st.time_s, st.step, summary_.unconverged_steps());

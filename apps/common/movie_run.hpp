@@ -2,7 +2,8 @@
 /// \file movie_run.hpp
 /// The batch run behind fsi-movie: steps a scenario to its end time and writes, into
 /// one folder,
-///   frames/frame_<step>.png   a picture every frame_every-th step (and of the last state)
+///   frames/frame_<step>.png   a picture every frame_every x time_step_s of simulated time
+///                             (every frame_every-th step at a constant k; and of the last state)
 ///   movie.mp4                 the same pictures as H.264, one fixed colour range
 ///   functionals.csv           every step, with newton_iterations and converged
 ///   plot_{distance,height,velocity,mass}.png   the functionals over time

@@ -1,5 +1,5 @@
 # tools/run-snapshot: a tiny drop run (fsi-movie, checkpoints every 2 steps to step 10)
-# saved with picture checkpoints every 4 steps and restored into a fresh folder goes on
+# saved with picture checkpoints every 0.04 s (4 steps) and restored into a fresh folder goes on
 # with --continue exactly as the run that was never interrupted (bit-identical rows);
 # a restore never overwrites a run, bad arguments are refused, and saving again after a
 # rewind drops the picture checkpoints the rewind took back.
@@ -34,7 +34,7 @@ endfunction()
 
 movie(${_dir}/whole --end-time 0.14)
 movie(${_dir}/run --end-time 0.1)
-snapshot(0 save ${_dir}/run ${_dir}/snap --keep-every 4)
+snapshot(0 save ${_dir}/run ${_dir}/snap --keep-every-s 0.04)
 expect_files(${_dir}/snap/checkpoints "*.xz" "step_000004.ckpt.xz;step_000008.ckpt.xz")
 file(READ ${_dir}/snap/SNAPSHOT.txt _note)
 if(NOT _note MATCHES "step_000010.ckpt")
@@ -43,7 +43,7 @@ endif()
 
 # Refused: bad arguments, a folder that is no run, a restore over a run.
 snapshot(2 save ${_dir}/run)
-snapshot(2 save ${_dir}/run ${_dir}/snap --keep-every 0)
+snapshot(2 save ${_dir}/run ${_dir}/snap --keep-every-s 0)
 snapshot(2 save ${_dir}/nowhere ${_dir}/snap2)
 snapshot(2 restore ${_dir}/nowhere ${_dir}/other)
 snapshot(3 restore ${_dir}/snap ${_dir}/run)
@@ -63,5 +63,5 @@ execute_process(COMMAND env FSI_STEP=${STEP} ${BASH} ${SOURCE_DIR}/tools/rewind-
 if(NOT _rc EQUAL 0)
   message(FATAL_ERROR "rewind-run: exit ${_rc}")
 endif()
-snapshot(0 save ${_dir}/run ${_dir}/snap --keep-every 4)
+snapshot(0 save ${_dir}/run ${_dir}/snap --keep-every-s 0.04)
 expect_files(${_dir}/snap/checkpoints "*.xz" "step_000004.ckpt.xz")

@@ -114,6 +114,8 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   e.numerics.reuse_contraction = 0.5;
   e.numerics.max_halvings = 1;
   e.numerics.accept_flagged_reduction = 1e-4;
+  e.numerics.time_step_max_s = 8e-3;  // longer steps away from the walls: like halve_step
+  e.numerics.time_step_wall_zone_m = 0.05;
   EXPECT_EQ(fsi::fingerprint(e), f);
   EXPECT_NE(fsi::io::fingerprint_v3(e), fsi::io::fingerprint_v3(a));  // format 3 covered them
   fsi::Scenario g = a;
@@ -198,6 +200,13 @@ TEST(ScenarioJson, RejectsValuesOutOfRange) {
   expect_parse_error(R"({"fluid": {"density_kgpm3": 0}})", "/fluid/density_kgpm3",
                      {"(0, 1e+05] kg/m^3", "got 0"});
   expect_parse_error(R"({"name": "a/b"})", "/name", {"characters from", "got \"a/b\""});
+  expect_parse_error(R"({"numerics": {"time_step_s": 2e-3, "time_step_max_s": 1e-3}})", "/numerics/time_step_max_s",
+                     {"0 (off) or at least time_step_s = 0.002 s", "got 0.001"});
+  expect_parse_error(R"({"numerics": {"time_step_max_s": 8e-3, "time_step_wall_zone_m": 5e-3},
+                         "contact": {"gamma_c": 800, "dist0_m": 1e-2}})",
+                     "/numerics/time_step_wall_zone_m", {"at least contact.dist0_m = 0.01 m", "got 0.005"});
+  expect_parse_error(R"({"numerics": {"time_step_wall_zone_m": -1}})", "/numerics/time_step_wall_zone_m",
+                     {"[0, 1000] m", "got -1"});
   expect_parse_error(R"({"name": ""})", "/name", {"1 to 128"});
 }
 

@@ -75,6 +75,14 @@ enum class FailurePolicy {
 
 struct NumericsSpec {
   double time_step_s = 2.0e-3;  ///< k
+  /// Longer steps away from the walls (ours; 0 = off, the chapter: every step is k). A body
+  /// outside the wall zone takes steps k 2^j up to this length, as long as at its speed it
+  /// needs at least four of them to reach the zone (core/time_step_choice.hpp). A solver
+  /// control: which length the next step has does not change what a state is.
+  double time_step_max_s = 0.0;
+  /// The wall zone [m]: a body whose interface is closer than this to a wall takes steps
+  /// of time_step_s (with time_step_max_s > 0 at least contact.dist0_m).
+  double time_step_wall_zone_m = 0.03;
   double end_time_s = 5.0;
   int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)
   double newton_rel_tol = 1.0e-8;    ///< stop when |R| <= rel_tol |R_0| ...
@@ -146,7 +154,9 @@ struct ContactSpec {
 };
 
 struct OutputSpec {
-  int frame_every = 10;        ///< write a frame every n-th step
+  /// A frame every frame_every x numerics.time_step_s of simulated time (every n-th step
+  /// while every step is time_step_s long).
+  int frame_every = 10;
   int width_px = 1280;
   int height_px = 720;
   int fps = 30;

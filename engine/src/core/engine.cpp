@@ -13,6 +13,7 @@
 #include "core/functionals.hpp"
 #include "core/initial_guess.hpp"
 #include "core/step_policy.hpp"
+#include "core/time_step_choice.hpp"
 #include "fe/point_locator.hpp"
 #include "fsi/error.hpp"
 #include "interface/body.hpp"
@@ -228,7 +229,7 @@ struct Engine::Impl {
 
   StepReport step() {
     StepReport report;
-    double k = scenario.numerics.time_step_s;
+    double k = core::choose_time_step(scenario.numerics, state.functionals, state.time_s);
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
     // start, both in one row scale) is kept: when every halving fails too, that one is

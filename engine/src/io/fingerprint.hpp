@@ -9,12 +9,15 @@
 
 namespace fsi::io {
 
-/// Numerics keys that only steer the nonlinear solver (how many Newton iterations, when to
-/// stop, what to do on failure). They are not part of the fingerprint since checkpoint
-/// format 4: the same state may go on with other solver controls.
-inline constexpr std::array<const char*, 8> kSolverControlKeys{
+/// Numerics keys that only steer the solver (how many Newton iterations, when to stop,
+/// what to do on failure, how long the next step may be). They are not part of the
+/// fingerprint since checkpoint format 4: the same state may go on with other solver
+/// controls. (The failure policy halve_step already varies the step's length; the longer
+/// steps away from the walls, time_step_max_s, do the same.)
+inline constexpr std::array<const char*, 10> kSolverControlKeys{
     "newton_budget",  "newton_rel_tol", "newton_abs_tol",           "reuse_contraction",
-    "failure_policy", "max_halvings",   "accept_flagged_reduction", "accept_flagged_max_residual"};
+    "failure_policy", "max_halvings",   "accept_flagged_reduction", "accept_flagged_max_residual",
+    "time_step_max_s", "time_step_wall_zone_m"};
 
 /// The fingerprint as checkpoint format 3 computed it (solver controls included); a
 /// format 3 checkpoint loads when this matches.

@@ -110,6 +110,10 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
     writer.object["numerics"].erase("accept_flagged_reduction");
   if (scenario.numerics.accept_flagged_max_residual == defaults.accept_flagged_max_residual)
     writer.object["numerics"].erase("accept_flagged_max_residual");
+  if (scenario.numerics.time_step_max_s == defaults.time_step_max_s)
+    writer.object["numerics"].erase("time_step_max_s");
+  if (scenario.numerics.time_step_wall_zone_m == defaults.time_step_wall_zone_m)
+    writer.object["numerics"].erase("time_step_wall_zone_m");
   return std::move(writer.object);
 }
 

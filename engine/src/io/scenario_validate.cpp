@@ -83,6 +83,22 @@ void check_numerics(const NumericsSpec& n, const KeyPath& at) {
   }
 }
 
+// Longer steps inside the contact force's reach would let one step carry the body deep
+// into it (the force is explicit in a step).
+void check_time_step_zone(const Scenario& s, const KeyPath& root) {
+  const NumericsSpec& n = s.numerics;
+  if (!(n.time_step_max_s > 0.0)) return;
+  if (n.time_step_max_s < n.time_step_s)
+    fail(root / "numerics" / "time_step_max_s",
+         "must be 0 (off) or at least time_step_s = " + number_text(n.time_step_s) + " s, got " +
+             number_text(n.time_step_max_s));
+  if (s.contact.gamma_c > 0.0 && n.time_step_wall_zone_m < s.contact.dist0_m)
+    fail(root / "numerics" / "time_step_wall_zone_m",
+         "must be at least contact.dist0_m = " + number_text(s.contact.dist0_m) +
+             " m when time_step_max_s > 0 (no long steps where the contact force acts), got " +
+             number_text(n.time_step_wall_zone_m));
+}
+
 void check_contact(const ContactSpec& c, const KeyPath& at) {
   if (c.gamma_c > 0.0 && !(c.dist0_m > 0.0)) {
     fail(at / "dist0_m",
@@ -111,6 +127,7 @@ void validate(const Scenario& scenario) {
   io::check_body_and_walls(scenario, root);
   io::check_numerics(scenario.numerics, root / "numerics");
   io::check_contact(scenario.contact, root / "contact");
+  io::check_time_step_zone(scenario, root);
   io::check_output(scenario.output, root / "output");
 }
 

@@ -1,0 +1,30 @@
+#pragma once
+/// \file time_step_choice.hpp
+/// How long the next step is (ours: the chapter's steps all have the one length k).
+///
+/// The stairs spend hours on a ball that is in flight most of the time, far from every
+/// wall, where nothing needs k = 1e-3 s: 40 ms of flight at k, 2k, 4k and 8k end at the
+/// same place to 0.2 mm and the same speed to 1e-4 m/s, for 1, 0.55, 0.28 and 0.15 of the
+/// CPU time (docs/solver.md, "Longer steps away from the walls"). Near a wall the step
+/// stays k: there the cut passes the thin rows and the contact force acts, and the runs
+/// failed at 2k (session 11).
+///
+/// With numerics.time_step_max_s > 0 the next step is k 2^j for the largest j with
+///   k 2^j <= time_step_max_s,
+///   kStepsToWallZone * |v| * k 2^j <= min_distance - time_step_wall_zone_m
+/// (v the body's mean velocity, min_distance its interface's distance to the walls), and
+/// not past end_time_s. The second condition makes a body approaching a wall come down
+/// to k step by step, at least kStepsToWallZone steps before it enters the zone; a body
+/// inside the zone (or without an interface: min_distance 0) always takes k.
+#include "fsi/scenario.hpp"
+#include "fsi/state.hpp"
+
+namespace fsi::core {
+
+/// A long step may cover at most this fraction (its inverse) of the way to the wall zone.
+inline constexpr double kStepsToWallZone = 4.0;
+
+/// The next step's length [s] for a body with the given functionals at time_s [s].
+double choose_time_step(const NumericsSpec& numerics, const Functionals& functionals, double time_s);
+
+}  // namespace fsi::core

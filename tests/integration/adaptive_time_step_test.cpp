@@ -1,0 +1,63 @@
+// Longer steps away from the walls (numerics.time_step_max_s, core/time_step_choice.hpp):
+// a ball falling far from the ground takes them and arrives where the constant-k run
+// does; near the ground every step is k again.
+#include <fsi/engine.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_scenarios.hpp"
+
+namespace {
+
+fsi::Scenario falling_ball(double k_max) {
+  fsi::Scenario s = fsi::testing::coarse_example1();
+  s.numerics.time_step_s = 5e-3;
+  s.numerics.time_step_max_s = k_max;
+  s.numerics.time_step_wall_zone_m = 0.03;
+  s.numerics.end_time_s = 0.2;
+  s.gravity_mps2 = {0.0, -2.0};
+  return s;
+}
+
+TEST(AdaptiveTimeStep, FarFromTheWallsStepsAreLongerAndEndWhereConstantStepsEnd) {
+  fsi::Engine constant(falling_ball(0.0)), adaptive(falling_ball(1e-2));
+  int constant_steps = 0, adaptive_steps = 0;
+  while (constant.state().time_s < 0.2 - 1e-9) {
+    const fsi::StepReport r = constant.step();
+    ASSERT_TRUE(r.converged) << r.message;
+    EXPECT_DOUBLE_EQ(r.time_step_s, 5e-3);
+    ++constant_steps;
+  }
+  while (adaptive.state().time_s < 0.2 - 1e-9) {
+    const fsi::StepReport r = adaptive.step();
+    ASSERT_TRUE(r.converged) << r.message;
+    // A power-of-two multiple of k, at most time_step_max_s.
+    const double ratio = r.time_step_s / 5e-3;
+    EXPECT_NEAR(ratio, std::exp2(std::round(std::log2(ratio))), 1e-12);
+    EXPECT_LE(r.time_step_s, 1e-2 * (1 + 1e-12));
+    ++adaptive_steps;
+  }
+  EXPECT_NEAR(adaptive.state().time_s, 0.2, 1e-9);
+  EXPECT_EQ(2 * adaptive_steps, constant_steps) << "the ball is far from the ground: every step 2k";
+  const fsi::Functionals& a = adaptive.state().functionals;
+  const fsi::Functionals& c = constant.state().functionals;
+  // Falling at about 0.3 m/s after 0.2 s: the same speed to 5 %, the same place to 1 mm.
+  EXPECT_LT(c.mean_vy_mps, -0.1);
+  EXPECT_NEAR(a.mean_vy_mps, c.mean_vy_mps, 0.05 * std::abs(c.mean_vy_mps));
+  EXPECT_NEAR(a.bottom_y_m, c.bottom_y_m, 1e-3);
+  EXPECT_LT(a.mass_error, 2.0 * c.mass_error + 1e-3);
+}
+
+TEST(AdaptiveTimeStep, NearAWallEveryStepIsK) {
+  fsi::Scenario s = falling_ball(1e-2);
+  // Example 1's ground is y = -1: the ball's bottom 2 cm above it, inside the wall zone.
+  s.body.center_m = {0.0, -1.0 + s.body.radius_m + 0.02};
+  fsi::Engine engine(s);
+  for (int i = 0; i < 3; ++i) {
+    const fsi::StepReport r = engine.step();
+    EXPECT_DOUBLE_EQ(r.time_step_s, 5e-3) << "t = " << r.time_s;
+  }
+}
+
+}  // namespace

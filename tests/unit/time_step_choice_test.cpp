@@ -1,0 +1,75 @@
+// The length of the next step (core/time_step_choice.hpp): k near the walls, k 2^j up to
+// time_step_max_s where the body needs at least four such steps to reach the wall zone.
+#include "core/time_step_choice.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using fsi::core::choose_time_step;
+
+fsi::NumericsSpec numerics(double k_max) {
+  fsi::NumericsSpec n;
+  n.time_step_s = 1e-3;
+  n.time_step_max_s = k_max;
+  n.time_step_wall_zone_m = 0.03;
+  n.end_time_s = 12.0;
+  return n;
+}
+
+fsi::Functionals body(double distance_m, double vx_mps, double vy_mps) {
+  fsi::Functionals f;
+  f.min_distance_m = distance_m;
+  f.mean_vx_mps = vx_mps;
+  f.mean_vy_mps = vy_mps;
+  return f;
+}
+
+TEST(TimeStepChoice, OffByDefaultEveryStepIsK) {
+  fsi::NumericsSpec n;  // time_step_max_s = 0: the chapter's constant step
+  EXPECT_EQ(choose_time_step(n, body(1.0, 0.0, 0.0), 0.0), n.time_step_s);
+}
+
+TEST(TimeStepChoice, InsideTheWallZoneTheStepIsK) {
+  const auto n = numerics(8e-3);
+  EXPECT_EQ(choose_time_step(n, body(0.029, 0.0, 0.0), 1.0), 1e-3);
+  EXPECT_EQ(choose_time_step(n, body(0.03, 0.0, 0.0), 1.0), 1e-3);
+  // No interface (a body gone): distance 0, the safe step.
+  EXPECT_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), 1.0), 1e-3);
+}
+
+TEST(TimeStepChoice, AtRestFarFromTheWallsTheLongestStep) {
+  EXPECT_DOUBLE_EQ(choose_time_step(numerics(8e-3), body(0.2, 0.0, 0.0), 0.0), 8e-3);
+  // time_step_max_s between two powers: the power below it.
+  EXPECT_DOUBLE_EQ(choose_time_step(numerics(6e-3), body(0.2, 0.0, 0.0), 0.0), 4e-3);
+}
+
+TEST(TimeStepChoice, ApproachingTheZoneTheStepComesDownToK) {
+  const auto n = numerics(8e-3);
+  // 1 m/s: four steps of 8e-3 cover 3.2 cm, of 4e-3 1.6 cm, of 2e-3 8 mm.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.033, 0.0, -1.0), 0.0), 8e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.031, 0.0, -1.0), 0.0), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0161, 0.0, -1.0), 0.0), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0159, 0.0, -1.0), 0.0), 2e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0079, 0.0, -1.0), 0.0), 1e-3);
+  // The speed counts, not its direction: 0.6 m/s right and 0.8 down is 1 m/s.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0159, 0.6, -0.8), 0.0), 2e-3);
+}
+
+TEST(TimeStepChoice, NeverPastTheEndTime) {
+  const auto n = numerics(8e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), 12.0 - 0.005), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), 12.0 - 0.0015), 1e-3);
+}
+
+TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
+  const auto n = numerics(8e-3);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(choose_time_step(n, body(0.5, nan, 0.0), 0.0), 1e-3);
+  EXPECT_EQ(choose_time_step(n, body(nan, 0.0, 0.0), 0.0), 1e-3);
+}
+
+}  // namespace
