@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -60,8 +61,15 @@ RunSummary::RunSummary(const Scenario& scenario)
       fingerprint_(fingerprint(scenario)),
       end_time_s_(scenario.numerics.end_time_s) {}
 
+void RunSummary::count_step_length(double length_s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", length_s);
+  ++step_lengths_[std::strtod(text, nullptr)];
+}
+
 void RunSummary::record_step(const StepReport& report, const State& state) {
   ++steps_;
+  if (report.accepted) count_step_length(report.time_step_s);
   if (!report.converged) ++unconverged_;
   if (!report.accepted) ++rejected_;
   time_s_ = state.time_s;
@@ -84,8 +92,11 @@ void RunSummary::record_step(const StepReport& report, const State& state) {
 
 void RunSummary::continue_from(const EarlierRun& earlier) {
   continued_from_step_ = earlier.step;
+  double previous_time_s = 0.0;  // the rows start at step 1
   for (const EarlierRun::Row& r : earlier.rows) {
     ++steps_;
+    count_step_length(r.time_s - previous_time_s);
+    previous_time_s = r.time_s;
     if (!r.converged) ++unconverged_;
     time_s_ = r.time_s;
     last_ = r.functionals;
@@ -139,6 +150,9 @@ nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool is_final,
   j["converged_steps"] = steps_ - unconverged_;
   j["unconverged_steps"] = unconverged_;
   j["rejected_steps"] = rejected_;
+  nlohmann::ordered_json by_length = nlohmann::ordered_json::array();
+  for (const auto& [length_s, n] : step_lengths_) by_length.push_back({{"length_s", length_s}, {"steps", n}});
+  j["step_lengths"] = std::move(by_length);
   if (have_min_) {
     j["min_distance"] = {{"distance_m", number_json(min_distance_m_)},
                          {"time_s", min_distance_time_s_}};

@@ -75,4 +75,43 @@ TEST(RunSummary, ContinuedRunKeepsTheTouchDownsBeforeItsCheckpoint) {
   EXPECT_DOUBLE_EQ(j["min_distance"]["time_s"].get<double>(), 0.2);
 }
 
+TEST(RunSummary, CountsStepsByLength) {
+  // Steps of 1e-3, 8e-3 (longer, away from the walls) and 5e-4 (halved); the earlier
+  // run's lengths come from its CSV times, which carry rounding.
+  const fsi::Scenario s = fsi::testing::coarse_example1();
+  fsi::app::EarlierRun earlier;
+  earlier.step = 3;
+  double t = 0.0;
+  for (int i = 1; i <= 3; ++i) {
+    fsi::app::EarlierRun::Row r{};
+    r.step = i;
+    t += i == 2 ? 8e-3 : 1e-3;
+    r.time_s = t;
+    r.converged = true;
+    earlier.rows.push_back(r);
+  }
+  earlier.time_s = t;
+  fsi::app::RunSummary summary(s);
+  summary.continue_from(earlier);
+  fsi::State state;
+  for (double k : {5e-4, 1e-3, 8e-3}) {
+    fsi::StepReport r = touching({}, t += k);
+    r.time_step_s = k;
+    state.time_s = t;
+    summary.record_step(r, state);
+  }
+  fsi::StepReport rejected = touching({}, t);
+  rejected.accepted = false;
+  rejected.time_step_s = 1.25e-4;
+  summary.record_step(rejected, state);
+  const auto j = summary.to_json(1.0, true, ".");
+  ASSERT_EQ(j["step_lengths"].size(), 3u) << j["step_lengths"].dump();
+  EXPECT_DOUBLE_EQ(j["step_lengths"][0]["length_s"].get<double>(), 5e-4);
+  EXPECT_EQ(j["step_lengths"][0]["steps"], 1);
+  EXPECT_DOUBLE_EQ(j["step_lengths"][1]["length_s"].get<double>(), 1e-3);
+  EXPECT_EQ(j["step_lengths"][1]["steps"], 3);
+  EXPECT_DOUBLE_EQ(j["step_lengths"][2]["length_s"].get<double>(), 8e-3);
+  EXPECT_EQ(j["step_lengths"][2]["steps"], 2);
+}
+
 }  // namespace
