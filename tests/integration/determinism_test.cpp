@@ -12,8 +12,7 @@
 
 namespace {
 
-TEST(Determinism, RestoredStateContinuesBitIdentically) {
-  const fsi::Scenario s = fsi::testing::coarse_example1();
+void expect_restored_state_continues_bit_identically(const fsi::Scenario& s) {
   const int n = 4;
   fsi::Engine straight(s);
   for (int i = 0; i < 2 * n; ++i) ASSERT_TRUE(straight.step().converged);
@@ -34,6 +33,19 @@ TEST(Determinism, RestoredStateContinuesBitIdentically) {
   EXPECT_EQ(straight.state().time_s, resumed.state().time_s);
   EXPECT_EQ(straight.state().corner_sign, resumed.state().corner_sign);
   EXPECT_EQ(straight.state().edge_cut, resumed.state().edge_cut);
+}
+
+TEST(Determinism, RestoredStateContinuesBitIdentically) {
+  expect_restored_state_continues_bit_identically(fsi::testing::coarse_example1());
+}
+
+TEST(Determinism, RestoredStateContinuesBitIdenticallyWithLongerSteps) {
+  // The next step's length comes from the state's functionals (time_step_max_s): a
+  // restored state must choose it as the uninterrupted run did.
+  fsi::Scenario s = fsi::testing::coarse_example1();
+  s.numerics.time_step_s = 5e-3;
+  s.numerics.time_step_max_s = 1e-2;
+  expect_restored_state_continues_bit_identically(s);
 }
 
 TEST(Determinism, CheckpointOfAnotherScenarioIsRefused) {
