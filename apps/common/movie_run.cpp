@@ -96,7 +96,9 @@ class MovieRun {
     // steps vary in length (time_step_max_s, halved steps): every frame_every-th step at
     // a constant k.
     const double frame_interval_s = s.output.frame_every * s.numerics.time_step_s;
-    const auto frame_index = [&](double t) { return static_cast<long>(std::floor((t + 0.5 * s.numerics.time_step_s) / frame_interval_s)); };
+    const auto frame_index = [&](double t) {
+      return static_cast<long>(std::floor((t + 0.5 * s.numerics.time_step_s) / frame_interval_s));
+    };
     long last_frame_index = frame_index(engine_.state().time_s);
     write_frame();
     // Whether the state the loop stops at is worth continuing from (checkpointed below).
