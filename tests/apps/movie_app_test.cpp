@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -124,6 +125,26 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   for (const char* f : {"functionals.csv", "scenario.json", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
     EXPECT_NE(outputs.find(f), std::string::npos) << f;
   }
+}
+
+TEST(MovieApp, FramesComeEveryFrameIntervalOfSimulatedTime) {
+  // Steps of 2k far from the ground (numerics.time_step_max_s): a frame every
+  // frame_every x k = 0.02 s of simulated time is one every step, not every second step.
+  const fs::path out = fresh_dir("long_steps");
+  const pid_t pid = start_movie({kScenario.string(), out.string(), "--frame-every", "2", "--set",
+                                 "/numerics/time_step_max_s=0.02", "--no-video", "--no-vtu", "--quiet"},
+                                out.string() + ".log");
+  ASSERT_EQ(wait_exit_code(pid), 0) << read_text(out.string() + ".log");
+  std::vector<std::string> frames;
+  for (const auto& e : fs::directory_iterator(out / "frames")) frames.push_back(e.path().filename().string());
+  std::sort(frames.begin(), frames.end());
+  EXPECT_EQ(frames, (std::vector<std::string>{"frame_000000.png", "frame_000001.png", "frame_000002.png",
+                                              "frame_000003.png", "frame_000004.png", "frame_000005.png"}));
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["steps"], 5);
+  ASSERT_EQ(summary["step_lengths"].size(), 1u) << summary["step_lengths"].dump();
+  EXPECT_DOUBLE_EQ(summary["step_lengths"][0]["length_s"].get<double>(), 0.02);
+  EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.1, 1e-9);
 }
 
 TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
