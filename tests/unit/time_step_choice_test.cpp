@@ -11,6 +11,8 @@ namespace {
 
 using fsi::core::choose_time_step;
 
+constexpr double kWide = 1.0;  // patches of 1 m: the patch criterion never binds
+
 fsi::NumericsSpec numerics(double k_max) {
   fsi::NumericsSpec n;
   n.time_step_s = 1e-3;
@@ -30,46 +32,56 @@ fsi::Functionals body(double distance_m, double vx_mps, double vy_mps) {
 
 TEST(TimeStepChoice, OffByDefaultEveryStepIsK) {
   fsi::NumericsSpec n;  // time_step_max_s = 0: the chapter's constant step
-  EXPECT_EQ(choose_time_step(n, body(1.0, 0.0, 0.0), 0.0), n.time_step_s);
+  EXPECT_EQ(choose_time_step(n, body(1.0, 0.0, 0.0), kWide, 0.0), n.time_step_s);
 }
 
 TEST(TimeStepChoice, InsideTheWallZoneTheStepIsK) {
   const auto n = numerics(8e-3);
-  EXPECT_EQ(choose_time_step(n, body(0.029, 0.0, 0.0), 1.0), 1e-3);
-  EXPECT_EQ(choose_time_step(n, body(0.03, 0.0, 0.0), 1.0), 1e-3);
+  EXPECT_EQ(choose_time_step(n, body(0.029, 0.0, 0.0), kWide, 1.0), 1e-3);
+  EXPECT_EQ(choose_time_step(n, body(0.03, 0.0, 0.0), kWide, 1.0), 1e-3);
   // No interface (a body gone): distance 0, the safe step.
-  EXPECT_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), 1.0), 1e-3);
+  EXPECT_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), kWide, 1.0), 1e-3);
 }
 
 TEST(TimeStepChoice, AtRestFarFromTheWallsTheLongestStep) {
-  EXPECT_DOUBLE_EQ(choose_time_step(numerics(8e-3), body(0.2, 0.0, 0.0), 0.0), 8e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(numerics(8e-3), body(0.2, 0.0, 0.0), kWide, 0.0), 8e-3);
   // time_step_max_s between two powers: the power below it.
-  EXPECT_DOUBLE_EQ(choose_time_step(numerics(6e-3), body(0.2, 0.0, 0.0), 0.0), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(numerics(6e-3), body(0.2, 0.0, 0.0), kWide, 0.0), 4e-3);
 }
 
 TEST(TimeStepChoice, ApproachingTheZoneTheStepComesDownToK) {
   const auto n = numerics(8e-3);
   // 1 m/s: four steps of 8e-3 cover 3.2 cm, of 4e-3 1.6 cm, of 2e-3 8 mm.
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.033, 0.0, -1.0), 0.0), 8e-3);
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.031, 0.0, -1.0), 0.0), 4e-3);
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0161, 0.0, -1.0), 0.0), 4e-3);
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0159, 0.0, -1.0), 0.0), 2e-3);
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0079, 0.0, -1.0), 0.0), 1e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.033, 0.0, -1.0), kWide, 0.0), 8e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.031, 0.0, -1.0), kWide, 0.0), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0161, 0.0, -1.0), kWide, 0.0), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0159, 0.0, -1.0), kWide, 0.0), 2e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0079, 0.0, -1.0), kWide, 0.0), 1e-3);
   // The speed counts, not its direction: 0.6 m/s right and 0.8 down is 1 m/s.
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0159, 0.6, -0.8), 0.0), 2e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.0159, 0.6, -0.8), kWide, 0.0), 2e-3);
+}
+
+TEST(TimeStepChoice, TheInterfaceCrossesAtMostAnEighthOfItsSmallestCutPatch) {
+  const auto n = numerics(8e-3);  // time_step_patch_fraction 1/8 by default
+  // 0.5 m/s in rows of 21 mm: 0.125 x 21 mm / 0.5 m/s = 5.25e-3 s -> 4e-3.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, -0.5), 0.021, 0.0), 4e-3);
+  // In the 4 mm rows the bound is 1e-3: k itself.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, -0.5), 0.004, 0.0), 1e-3);
+  // In 6 cm patches 8e-3 moves it 4 mm: allowed.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, -0.5), 0.06, 0.0), 8e-3);
 }
 
 TEST(TimeStepChoice, NeverPastTheEndTime) {
   const auto n = numerics(8e-3);
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), 12.0 - 0.005), 4e-3);
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), 12.0 - 0.0015), 1e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 12.0 - 0.005), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 12.0 - 0.0015), 1e-3);
 }
 
 TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
   const auto n = numerics(8e-3);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(choose_time_step(n, body(0.5, nan, 0.0), 0.0), 1e-3);
-  EXPECT_EQ(choose_time_step(n, body(nan, 0.0, 0.0), 0.0), 1e-3);
+  EXPECT_EQ(choose_time_step(n, body(0.5, nan, 0.0), kWide, 0.0), 1e-3);
+  EXPECT_EQ(choose_time_step(n, body(nan, 0.0, 0.0), kWide, 0.0), 1e-3);
 }
 
 }  // namespace

@@ -83,6 +83,10 @@ struct NumericsSpec {
   /// The wall zone [m]: a body whose interface is closer than this to a wall takes steps
   /// of time_step_s (with time_step_max_s > 0 at least contact.dist0_m).
   double time_step_wall_zone_m = 0.03;
+  /// ... and while its speed times the step stays within this fraction of the shortest side
+  /// of the patches its interface cuts (k itself moves it by up to 1/8 of the stairs' 4 mm
+  /// rows at 0.5 m/s).
+  double time_step_patch_fraction = 0.125;
   double end_time_s = 5.0;
   int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)
   double newton_rel_tol = 1.0e-8;    ///< stop when |R| <= rel_tol |R_0| ...

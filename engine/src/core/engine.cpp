@@ -229,7 +229,8 @@ struct Engine::Impl {
 
   StepReport step() {
     StepReport report;
-    double k = core::choose_time_step(scenario.numerics, state.functionals, state.time_s);
+    double k = core::choose_time_step(scenario.numerics, state.functionals, core::cut_patch_side(mesh, cut_next),
+                                      state.time_s);
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
     // start, both in one row scale) is kept: when every halving fails too, that one is

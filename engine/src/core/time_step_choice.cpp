@@ -1,10 +1,23 @@
 #include "core/time_step_choice.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fsi::core {
 
-double choose_time_step(const NumericsSpec& n, const Functionals& f, double time_s) {
+double cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& cut) {
+  double side_m = std::numeric_limits<double>::infinity();
+  for (int p = 0; p < mesh.num_patches(); ++p) {
+    const mesh::Patch& patch = mesh.patches[p];
+    bool at_interface = cut.kind[p] != fe::PatchKind::uncut;
+    for (int c = 0; c < 4 && !at_interface; ++c) at_interface = cut.corner_sign[patch.node[c]] == 0;
+    if (at_interface) side_m = std::min(side_m, patch.min_size_m);
+  }
+  return side_m;
+}
+
+double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_patch_side_m, double time_s) {
   const double k = n.time_step_s;
   if (!(n.time_step_max_s > k)) return k;  // off (0), or no longer step allowed
   const double gap_m = f.min_distance_m - n.time_step_wall_zone_m;
@@ -16,6 +29,7 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double time
   double chosen = k;
   for (double longer = 2.0 * k; longer <= n.time_step_max_s * (1.0 + 1e-12); longer *= 2.0) {
     if (kStepsToWallZone * speed_mps * longer > gap_m || longer > time_left_s) break;
+    if (speed_mps * longer > n.time_step_patch_fraction * cut_patch_side_m) break;
     chosen = longer;
   }
   return chosen;

@@ -114,6 +114,8 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
     writer.object["numerics"].erase("time_step_max_s");
   if (scenario.numerics.time_step_wall_zone_m == defaults.time_step_wall_zone_m)
     writer.object["numerics"].erase("time_step_wall_zone_m");
+  if (scenario.numerics.time_step_patch_fraction == defaults.time_step_patch_fraction)
+    writer.object["numerics"].erase("time_step_patch_fraction");
   return std::move(writer.object);
 }
 
