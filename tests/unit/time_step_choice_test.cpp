@@ -2,6 +2,9 @@
 // time_step_max_s where the body needs at least four such steps to reach the wall zone.
 #include "core/time_step_choice.hpp"
 
+#include "fe/cut_mesh.hpp"
+#include "mesh/patch_mesh.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -82,6 +85,35 @@ TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(choose_time_step(n, body(0.5, nan, 0.0), kWide, 0.0), 1e-3);
   EXPECT_EQ(choose_time_step(n, body(nan, 0.0, 0.0), kWide, 0.0), 1e-3);
+}
+
+TEST(TimeStepChoice, CutPatchSideIsTheSmallestPatchTheInterfaceCuts) {
+  // A box graded in y: rows of 1 cm at y = 0 growing to 10 cm at the top, 10 cm wide.
+  fsi::MeshSpec spec;
+  fsi::BlockSpec b;
+  b.x = {fsi::AxisPiece{0.0, 1.0, 10, 0.0, 0.0}};
+  b.y = {fsi::AxisPiece{0.0, 1.0, 20, 0.01, 0.1}};
+  spec.blocks = {b};
+  const fsi::mesh::PatchMesh mesh = fsi::mesh::build_patch_mesh(spec, {});
+  double smallest = 1.0, cut_smallest = 1.0;
+  const auto circle = [](double cy, double r) {
+    return [=](const fsi::mesh::Vec2& x) { return std::hypot(x.x() - 0.5, x.y() - cy) - r; };
+  };
+  // A ball in the upper half cuts only the tall rows there: not the 1 cm rows below.
+  const fsi::fe::CutMesh high = fsi::fe::build_cut_mesh(mesh, fsi::fe::cut_data(mesh, circle(0.75, 0.15)));
+  for (int p = 0; p < mesh.num_patches(); ++p) {
+    smallest = std::min(smallest, mesh.patches[p].min_size_m);
+    if (high.kind[p] != fsi::fe::PatchKind::uncut) cut_smallest = std::min(cut_smallest, mesh.patches[p].min_size_m);
+  }
+  EXPECT_NEAR(smallest, 0.01, 1e-3);
+  EXPECT_GT(cut_smallest, 0.04);
+  EXPECT_DOUBLE_EQ(fsi::core::cut_patch_side(mesh, high), cut_smallest);
+  // Its bottom 5 mm above y = 0 cuts the 1 cm row.
+  const fsi::fe::CutMesh low = fsi::fe::build_cut_mesh(mesh, fsi::fe::cut_data(mesh, circle(0.155, 0.15)));
+  EXPECT_NEAR(fsi::core::cut_patch_side(mesh, low), smallest, 1e-12);
+  // No interface: no bound.
+  const fsi::fe::CutMesh none = fsi::fe::build_cut_mesh(mesh, fsi::fe::cut_data(mesh, circle(0.5, 5.0)));
+  EXPECT_TRUE(std::isinf(fsi::core::cut_patch_side(mesh, none)));
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ double cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& cut) {
   for (int p = 0; p < mesh.num_patches(); ++p) {
     const mesh::Patch& patch = mesh.patches[p];
     bool at_interface = cut.kind[p] != fe::PatchKind::uncut;
-    for (int c = 0; c < 4 && !at_interface; ++c) at_interface = cut.corner_sign[patch.node[c]] == 0;
+    for (int c : mesh::kCornerLocal) at_interface = at_interface || cut.corner_sign[patch.node[c]] == 0;
     if (at_interface) side_m = std::min(side_m, patch.min_size_m);
   }
   return side_m;
