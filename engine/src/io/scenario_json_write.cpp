@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "fsi/scenario.hpp"
 #include "io/fingerprint.hpp"
@@ -99,23 +100,19 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   // Numerics added after checkpoint version 3 count only when set: at their default every
   // step is the same as before they existed, so older checkpoints stay loadable.
   const NumericsSpec defaults;
-  if (scenario.numerics.cip_wall_film_factor == defaults.cip_wall_film_factor)
-    writer.object["numerics"].erase("cip_wall_film_factor");
-  if (scenario.numerics.cut_snap == defaults.cut_snap) writer.object["numerics"].erase("cut_snap");
-  if (scenario.numerics.cut_snap_distance_m == defaults.cut_snap_distance_m)
-    writer.object["numerics"].erase("cut_snap_distance_m");
-  if (scenario.numerics.cavitation_pressure_pa == defaults.cavitation_pressure_pa)
-    writer.object["numerics"].erase("cavitation_pressure_pa");
-  if (scenario.numerics.accept_flagged_reduction == defaults.accept_flagged_reduction)
-    writer.object["numerics"].erase("accept_flagged_reduction");
-  if (scenario.numerics.accept_flagged_max_residual == defaults.accept_flagged_max_residual)
-    writer.object["numerics"].erase("accept_flagged_max_residual");
-  if (scenario.numerics.time_step_max_s == defaults.time_step_max_s)
-    writer.object["numerics"].erase("time_step_max_s");
-  if (scenario.numerics.time_step_wall_zone_m == defaults.time_step_wall_zone_m)
-    writer.object["numerics"].erase("time_step_wall_zone_m");
-  if (scenario.numerics.time_step_patch_fraction == defaults.time_step_patch_fraction)
-    writer.object["numerics"].erase("time_step_patch_fraction");
+  const NumericsSpec& n = scenario.numerics;
+  const std::pair<const char*, bool> at_default[] = {
+      {"cip_wall_film_factor", n.cip_wall_film_factor == defaults.cip_wall_film_factor},
+      {"cut_snap", n.cut_snap == defaults.cut_snap},
+      {"cut_snap_distance_m", n.cut_snap_distance_m == defaults.cut_snap_distance_m},
+      {"cavitation_pressure_pa", n.cavitation_pressure_pa == defaults.cavitation_pressure_pa},
+      {"accept_flagged_reduction", n.accept_flagged_reduction == defaults.accept_flagged_reduction},
+      {"accept_flagged_max_residual", n.accept_flagged_max_residual == defaults.accept_flagged_max_residual},
+      {"time_step_max_s", n.time_step_max_s == defaults.time_step_max_s},
+      {"time_step_wall_zone_m", n.time_step_wall_zone_m == defaults.time_step_wall_zone_m},
+      {"time_step_patch_fraction", n.time_step_patch_fraction == defaults.time_step_patch_fraction}};
+  for (const auto& [key, is_default] : at_default)
+    if (is_default) writer.object["numerics"].erase(key);
   return std::move(writer.object);
 }
 
