@@ -39,6 +39,7 @@ fsi::State sample_state() {
   s.time_s = 1.0 / 3.0;
   s.step = 123456789012L;
   s.time_step_s = 2e-3;
+  s.time_step_limit_s = 4e-3;
   s.solution = random_vector(rng, 5 * 40);
   s.solution[0] = -0.0;
   s.solution[1] = std::numeric_limits<double>::denorm_min();
@@ -78,6 +79,7 @@ TEST(Checkpoint, RoundTripIsBitIdentical) {
   EXPECT_EQ(std::bit_cast<std::uint64_t>(back.time_s), std::bit_cast<std::uint64_t>(s.time_s));
   EXPECT_EQ(back.step, s.step);
   EXPECT_EQ(back.time_step_s, s.time_step_s);
+  EXPECT_EQ(back.time_step_limit_s, s.time_step_limit_s);
   EXPECT_TRUE(same_bits(back.solution, s.solution));
   EXPECT_TRUE(same_bits(back.previous_solution, s.previous_solution));
   EXPECT_EQ(back.corner_sign, s.corner_sign);
@@ -127,11 +129,34 @@ std::string with_version(std::string bytes, std::uint32_t version) {
   return bytes;
 }
 
+/// A checkpoint of `state` (without a factorization origin) in the layout of formats 3
+/// and 4: without time_step_limit_s, the 8 bytes before the origin flag and the checksum.
+std::string older_layout(fsi::State state, const std::string& fingerprint, std::uint32_t version) {
+  state.factorization_origin.reset();
+  const fs::path file = temp_file("older_layout.ckpt");
+  fsi::io::write_checkpoint(file, state, fingerprint);
+  const std::string today = fsi::test::read_file(file);
+  const std::size_t limit_at = today.size() - 8 - 4 - 8;
+  return with_version(today.substr(0, limit_at) + today.substr(limit_at + 8), version);
+}
+
+TEST(Checkpoint, Formats3And4ContinueWithTheStepLimitAtTheirLastStep) {
+  // Before format 5 the step-length controller had no memory.
+  const fs::path file = temp_file("v4.ckpt");
+  for (std::uint32_t version : {3u, 4u}) {
+    write_bytes(file, older_layout(sample_state(), "aaaaaaaaaaaaaaaa", version));
+    const fsi::State back = fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa");
+    EXPECT_EQ(back.time_step_limit_s, sample_state().time_step_s) << version;
+    EXPECT_TRUE(same_bits(back.solution, sample_state().solution)) << version;
+    EXPECT_EQ(back.functionals.mass_error, sample_state().functionals.mass_error) << version;
+  }
+}
+
 TEST(Checkpoint, AFormat3FileIsCheckedAgainstTheFormat3Fingerprint) {
-  // Format 3 fingerprints covered the solver controls; the file's layout is today's.
+  // Format 3 fingerprints covered the solver controls.
   const fs::path file = temp_file("v3.ckpt");
-  fsi::io::write_checkpoint(file, sample_state(), "aaaaaaaaaaaaaaaa");
-  const std::string v4 = fsi::test::read_file(file);
+  const std::string v4 = older_layout(sample_state(), "aaaaaaaaaaaaaaaa", 4);
+  write_bytes(file, v4);
   EXPECT_NO_THROW(fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa", "cccccccccccccccc"));
   write_bytes(file, with_version(v4, 3));
   EXPECT_EQ(fsi::io::read_checkpoint(file, "bbbbbbbbbbbbbbbb", "aaaaaaaaaaaaaaaa").step, sample_state().step);

@@ -80,6 +80,34 @@ TEST(TimeStepChoice, NeverPastTheEndTime) {
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 12.0 - 0.0015), 1e-3);
 }
 
+TEST(TimeStepChoice, AtMostTheLimitTheLastStepsLeft) {
+  const auto n = numerics(8e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 2e-3), 2e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 3e-3), 2e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 1e-3), 1e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 16e-3), 8e-3);
+  // A limit never takes the step below k (the chapter's step) nor past the other rules.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 1e-4), 1e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.029, 0.0, 0.0), kWide, 1.0, 8e-3), 1e-3);
+}
+
+TEST(TimeStepChoice, TheLimitDoublesAfterCalmStepsHalvesAfterLaboriousOnesAndIsKAfterTrouble) {
+  using fsi::core::kCalmNewtonIterations;
+  using fsi::core::next_time_step_limit;
+  constexpr double k = 1e-3;
+  EXPECT_DOUBLE_EQ(next_time_step_limit({k, true, 3}, k), 2e-3);
+  EXPECT_DOUBLE_EQ(next_time_step_limit({4e-3, true, kCalmNewtonIterations}, k), 8e-3);
+  EXPECT_DOUBLE_EQ(next_time_step_limit({8e-3, true, kCalmNewtonIterations + 1}, k), 4e-3);
+  EXPECT_DOUBLE_EQ(next_time_step_limit({k, true, 20}, k), k);
+  // Unconverged, flagged or halved: back to k, from any length.
+  EXPECT_DOUBLE_EQ(next_time_step_limit({8e-3, false, 3}, k), k);
+  EXPECT_DOUBLE_EQ(next_time_step_limit({k / 4, false, 30}, k), k);
+  // From k the way back to 8e-3 takes three calm steps.
+  double limit = k;
+  for (int i = 0; i < 3; ++i) limit = next_time_step_limit({limit, true, 4}, k);
+  EXPECT_DOUBLE_EQ(limit, 8e-3);
+}
+
 TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
   const auto n = numerics(8e-3);
   const double nan = std::numeric_limits<double>::quiet_NaN();

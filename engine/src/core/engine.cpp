@@ -67,6 +67,7 @@ struct Engine::Impl {
     cut_prev = cut_cur;
     state = State{};
     state.time_step_s = scenario.numerics.time_step_s;
+    state.time_step_limit_s = scenario.numerics.time_step_s;  // longer steps come after calm ones
     state.solution = Eigen::VectorXd::Zero(kFieldsPerNode * n);
     for (int i = 0; i < n; ++i)
       if (cut_cur.touches_solid[i]) {
@@ -230,7 +231,7 @@ struct Engine::Impl {
   StepReport step() {
     StepReport report;
     double k = core::choose_time_step(scenario.numerics, state.functionals, core::cut_patch_side(mesh, cut_next),
-                                      state.time_s);
+                                      state.time_s, state.time_step_limit_s);
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
     // start, both in one row scale) is kept: when every halving fails too, that one is
@@ -256,6 +257,8 @@ struct Engine::Impl {
       if (verdict.action == core::AttemptAction::accept) {
         accept(std::move(x), k, std::move(quad), report);
         report.accepted = true;
+        state.time_step_limit_s = core::next_time_step_limit(
+            {k, attempt_no == 0 && report.converged, r.iterations}, scenario.numerics.time_step_s);
         if (verdict.flagged_early) {
           std::ostringstream why;
           why << "accepted without halving: residual at " << r.relative_residual
@@ -276,6 +279,7 @@ struct Engine::Impl {
         report.largest_residual = best_peak;
         accept(std::move(best_x), k, std::move(quad), report);
         report.accepted = true;
+        state.time_step_limit_s = core::next_time_step_limit({k, false, 0}, scenario.numerics.time_step_s);
         break;
       }
       // give_up: stop_and_rollback, no attempt that moved Newton's iterate, or a

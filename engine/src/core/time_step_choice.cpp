@@ -17,9 +17,11 @@ double cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& cut) {
   return side_m;
 }
 
-double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_patch_side_m, double time_s) {
+double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_patch_side_m, double time_s,
+                        double history_limit_s) {
   const double k = n.time_step_s;
   if (!(n.time_step_max_s > k)) return k;  // off (0), or no longer step allowed
+  const double longest_s = history_limit_s > 0.0 ? std::min(n.time_step_max_s, history_limit_s) : n.time_step_max_s;
   const double gap_m = f.min_distance_m - n.time_step_wall_zone_m;
   if (!(gap_m > 0.0)) return k;
   const double speed_mps = std::hypot(f.mean_vx_mps, f.mean_vy_mps);
@@ -27,12 +29,18 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
   // A longer step must not overshoot the end (t accumulates rounding: a little slack).
   const double time_left_s = n.end_time_s - time_s + 1e-6 * k;
   double chosen = k;
-  for (double longer = 2.0 * k; longer <= n.time_step_max_s * (1.0 + 1e-12); longer *= 2.0) {
+  for (double longer = 2.0 * k; longer <= longest_s * (1.0 + 1e-12); longer *= 2.0) {
     if (kStepsToWallZone * speed_mps * longer > gap_m || longer > time_left_s) break;
     if (speed_mps * longer > n.time_step_patch_fraction * cut_patch_side_m) break;
     chosen = longer;
   }
   return chosen;
+}
+
+double next_time_step_limit(const StepOutcome& outcome, double base_step_s) {
+  if (!outcome.calm) return base_step_s;
+  if (outcome.newton_iterations > kCalmNewtonIterations) return std::max(base_step_s, 0.5 * outcome.time_step_s);
+  return std::max(base_step_s, 2.0 * outcome.time_step_s);
 }
 
 }  // namespace fsi::core

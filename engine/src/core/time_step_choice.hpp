@@ -20,7 +20,12 @@
 /// without an interface: min_distance 0) always takes k. The third keeps the interface
 /// from crossing more of a patch per step than k does in the thin rows: the graded rows
 /// above the treads reach 10 cm up, and there 8e-3 s steps (3.5 mm in 21 mm rows) failed
-/// where the cut moved past nodes (rho_f = 100 at t = 6.2 s, session 17).
+/// where the cut moved past nodes (rho_f = 100 at t = 6.2 s, session 17). Besides, the
+/// step grows by at most 2 per step and only while Newton converges easily, halves when
+/// Newton labours, and any
+/// trouble sends it back to k (next_time_step_limit): with the geometric conditions
+/// alone 4e-3 s steps still failed there (session 17), after a halved step had been
+/// followed by a 4e-3 s one.
 #include "fe/cut_mesh.hpp"
 #include "fsi/scenario.hpp"
 #include "fsi/state.hpp"
@@ -31,10 +36,31 @@ namespace fsi::core {
 /// A long step may cover at most this fraction (its inverse) of the way to the wall zone.
 inline constexpr double kStepsToWallZone = 4.0;
 
+/// A step that converged at its first attempt in at most this many Newton iterations lets
+/// the next one be twice as long. Calm flight takes 4-7 at 8e-3 s (and 3-5 at k); the
+/// rho_f = 100 failure of session 17 was preceded by steps of 8-13 and by unconverged
+/// ones, each followed by another long step.
+inline constexpr int kCalmNewtonIterations = 7;
+
 /// The next step's length [s] for a body with the given functionals at time_s [s] whose
-/// interface cuts patches with sides down to cut_patch_side_m [m].
+/// interface cuts patches with sides down to cut_patch_side_m [m], at most
+/// history_limit_s (State::time_step_limit_s; 0: none, as the tests of the geometric
+/// conditions alone use).
 double choose_time_step(const NumericsSpec& numerics, const Functionals& functionals, double cut_patch_side_m,
-                        double time_s);
+                        double time_s, double history_limit_s = 0.0);
+
+/// How the step just accepted went, for the next step's limit.
+struct StepOutcome {
+  double time_step_s = 0.0;    ///< the accepted step's length [s]
+  bool calm = false;           ///< converged at its first attempt
+  int newton_iterations = 0;   ///< of that attempt
+};
+
+/// State::time_step_limit_s after `outcome` (base_step_s: numerics.time_step_s): the step
+/// grows by at most a factor 2 per step and only after calm steps, is halved after a
+/// laborious one (more iterations), and falls back to the base step after any trouble (the standard controller of implicit integrators with
+/// Newton: the iteration count is the cheapest warning that a step is too long).
+double next_time_step_limit(const StepOutcome& outcome, double base_step_s);
 
 /// The shortest side (PatchMesh::Patch::min_size_m) of the patches the interface of
 /// `cut` cuts or touches; infinity without an interface.

@@ -163,6 +163,7 @@ void write_checkpoint(const std::filesystem::path& file, const State& state,
   write_levels(w, state);
   Functionals functionals = state.functionals;
   for (const double* value : functional_fields(functionals)) w.f64(*value);
+  w.f64(state.time_step_limit_s);
   // Where the reused LU factorization came from (bit-identical continuation).
   const FactorizationOrigin* origin = state.factorization_origin.get();
   w.u32(origin ? 1 : 0);
@@ -230,6 +231,8 @@ State read_checkpoint(const std::filesystem::path& file, const std::string& expe
   State state;
   read_levels(r, state);
   for (double* value : functional_fields(state.functionals)) *value = r.f64("functionals");
+  // Before version 5 the step-length controller had no memory: continue at the last step.
+  state.time_step_limit_s = version >= 5 ? r.f64("time_step_limit_s") : state.time_step_s;
   if (r.u32("factorization_origin") != 0) {
     auto origin = std::make_shared<FactorizationOrigin>();
     read_levels(r, origin->step_start);

@@ -10,6 +10,7 @@
 ///   time_s f64, step i64, time_step_s f64
 ///   solution, previous_solution, node_xy, previous_node_xy: each u64 count + count f64
 ///   functionals: 11 f64 in the order of fsi::Functionals' members
+///   time_step_limit_s f64 (version 5 on)
 ///   checksum    u64 FNV-1a of every byte before it
 /// The Engine's save_checkpoint/load_checkpoint wrap these.
 #include <cstdint>
@@ -23,9 +24,11 @@ namespace fsi::io {
 /// Bump when the layout or the meaning of a stored field changes (3: the scenario
 /// fingerprint leaves out the end time and covers contact.min_dist_fraction and
 /// numerics.cip_transient_weight; 4: the fingerprint leaves out the solver controls,
-/// io/fingerprint.hpp -- the layout is that of 3).
-inline constexpr std::uint32_t kCheckpointVersion = 4;
-/// The oldest version read: a version 3 file is the same layout with the older fingerprint.
+/// io/fingerprint.hpp -- the layout is that of 3; 5: State::time_step_limit_s after the
+/// functionals).
+inline constexpr std::uint32_t kCheckpointVersion = 5;
+/// The oldest version read: a version 3 file is the same layout with the older fingerprint,
+/// 3 and 4 continue with the limit at their last step.
 inline constexpr std::uint32_t kOldestCheckpointVersion = 3;
 
 /// Writes `state` to `file` atomically (a temporary file in the same folder, then a
