@@ -77,8 +77,10 @@ struct NumericsSpec {
   double time_step_s = 2.0e-3;  ///< k
   /// Longer steps away from the walls (ours; 0 = off, the chapter: every step is k). A body
   /// outside the wall zone takes steps k 2^j up to this length, as long as at its speed it
-  /// needs at least four of them to reach the zone (core/time_step_choice.hpp). A solver
-  /// control: which length the next step has does not change what a state is.
+  /// needs at least four of them to reach the zone (core/time_step_choice.hpp), starting at
+  /// k and at most doubling after each step Newton solved easily, back to k after any
+  /// trouble (State::time_step_limit_s). A solver control: which length the next step has
+  /// does not change what a state is.
   double time_step_max_s = 0.0;
   /// The wall zone [m]: a body whose interface is closer than this to a wall takes steps
   /// of time_step_s (with time_step_max_s > 0 at least contact.dist0_m).
