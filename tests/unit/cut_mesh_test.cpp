@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 
+#include "fe_test_meshes.hpp"
 #include "mesh/patch_mesh.hpp"
 
 namespace {
@@ -17,14 +18,7 @@ using fsi::fe::CutMesh;
 using fsi::fe::PatchKind;
 using fsi::mesh::Vec2;
 
-fsi::mesh::PatchMesh unit_mesh(int patches) {
-  fsi::MeshSpec spec;
-  fsi::BlockSpec b;
-  b.x = {fsi::AxisPiece{0.0, 1.0, patches, 0.0, 0.0}};
-  b.y = {fsi::AxisPiece{0.0, 1.0, patches, 0.0, 0.0}};
-  spec.blocks = {b};
-  return fsi::mesh::build_patch_mesh(spec, {});
-}
+fsi::mesh::PatchMesh unit_mesh(int patches) { return fsi::test::block_mesh(patches, patches, 1.0, 1.0); }
 
 double total_area(const CutMesh& cut) {
   double a = 0.0;
@@ -141,16 +135,7 @@ TEST(CutMesh, AnInterfaceAlongPatchSidesIsInterfaceToo) {
   // The square [0.25, 0.75]^2 on 4 x 4 patches of 0.25 m: the level set vanishes on whole
   // patch sides, so no patch is cut; the sides between the solid and the fluid patches
   // are the interface (its length 2 m, closed), not a hole in it.
-  const auto mesh = fsi::mesh::build_patch_mesh(
-      [] {
-        fsi::MeshSpec spec;
-        fsi::BlockSpec b;
-        b.x = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
-        b.y = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
-        spec.blocks = {b};
-        return spec;
-      }(),
-      {});
+  const auto mesh = unit_mesh(4);
   auto phi = [](const Vec2& x) { return std::max(std::abs(x.x() - 0.5), std::abs(x.y() - 0.5)) - 0.25; };
   const CutMesh cut = fsi::fe::build_cut_mesh(mesh, phi);
   for (PatchKind k : cut.kind) EXPECT_EQ(k, PatchKind::uncut);
@@ -185,12 +170,7 @@ TEST(CutMesh, ASnapDistanceTreatsShortAndLongSidesAlike) {
   // enough for a cut 0.6 mm from a corner on a short side (7.5 %) would move cuts on the
   // long sides by up to 4 mm; a snap distance of 0.8 mm takes the first and leaves a cut
   // 1.9 mm from a corner on a long side alone.
-  fsi::MeshSpec spec;
-  fsi::BlockSpec b;
-  b.x = {fsi::AxisPiece{0.0, 0.112, 2, 0.0, 0.0}};
-  b.y = {fsi::AxisPiece{0.0, 0.016, 2, 0.0, 0.0}};
-  spec.blocks = {b};
-  const auto mesh = fsi::mesh::build_patch_mesh(spec, {});
+  const auto mesh = fsi::test::block_mesh(2, 2, 0.112, 0.016);
   auto sign_at = [&](const fsi::fe::CutData& data, double x, double y) {
     for (int n = 0; n < mesh.num_nodes(); ++n)
       if ((mesh.nodes[n] - Vec2(x, y)).norm() < 1e-12) return static_cast<int>(data.corner_sign[n]);
