@@ -22,10 +22,9 @@
 /// above the treads reach 10 cm up, and there 8e-3 s steps (3.5 mm in 21 mm rows) failed
 /// where the cut moved past nodes (rho_f = 100 at t = 6.2 s, session 17). Besides, the
 /// step grows by at most 2 per step and only while Newton converges easily, halves when
-/// Newton labours, and any
-/// trouble sends it back to k (next_time_step_limit): with the geometric conditions
-/// alone 4e-3 s steps still failed there (session 17), after a halved step had been
-/// followed by a 4e-3 s one.
+/// Newton labours, and any trouble sends it back to k (next_time_step_limit): with the
+/// geometric conditions alone 4e-3 s steps still failed there (session 17), after a
+/// halved step had been followed by a 4e-3 s one.
 #include "fe/cut_mesh.hpp"
 #include "fsi/scenario.hpp"
 #include "fsi/state.hpp"
@@ -58,8 +57,9 @@ struct StepOutcome {
 
 /// State::time_step_limit_s after `outcome` (base_step_s: numerics.time_step_s): the step
 /// grows by at most a factor 2 per step and only after calm steps, is halved after a
-/// laborious one (more iterations), and falls back to the base step after any trouble (the standard controller of implicit integrators with
-/// Newton: the iteration count is the cheapest warning that a step is too long).
+/// laborious one (more iterations), and falls back to the base step after any trouble
+/// (the standard controller of implicit integrators with Newton: the iteration count is
+/// the cheapest warning that a step is too long).
 double next_time_step_limit(const StepOutcome& outcome, double base_step_s);
 
 /// The shortest side (PatchMesh::Patch::min_size_m) of the patches the interface of
