@@ -116,6 +116,7 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   e.numerics.accept_flagged_reduction = 1e-4;
   e.numerics.time_step_max_s = 8e-3;  // longer steps away from the walls: like halve_step
   e.numerics.time_step_wall_zone_m = 0.05;
+  e.numerics.time_step_wall_zone_max_s = 4e-3;
   EXPECT_EQ(fsi::fingerprint(e), f);
   EXPECT_NE(fsi::io::fingerprint_v3(e), fsi::io::fingerprint_v3(a));  // format 3 covered them
   fsi::Scenario g = a;
@@ -207,6 +208,10 @@ TEST(ScenarioJson, RejectsValuesOutOfRange) {
                      "/numerics/time_step_wall_zone_m", {"at least contact.dist0_m = 0.01 m", "got 0.005"});
   expect_parse_error(R"({"numerics": {"time_step_wall_zone_m": -1}})", "/numerics/time_step_wall_zone_m",
                      {"[0, 1000] m", "got -1"});
+  expect_parse_error(R"({"numerics": {"time_step_max_s": 8e-3, "time_step_wall_zone_max_s": 1.6e-2}})",
+                     "/numerics/time_step_wall_zone_max_s", {"[time_step_s, time_step_max_s] = [0.002, 0.008] s", "got 0.016"});
+  expect_parse_error(R"({"numerics": {"time_step_wall_zone_max_s": 4e-3}})", "/numerics/time_step_wall_zone_max_s",
+                     {"0 (off) or in [time_step_s, time_step_max_s] = [0.002, 0] s", "got 0.004"});
   expect_parse_error(R"({"name": ""})", "/name", {"1 to 128"});
 }
 

@@ -108,6 +108,32 @@ TEST(TimeStepChoice, TheLimitDoublesAfterCalmStepsHalvesAfterLaboriousOnesAndIsK
   EXPECT_DOUBLE_EQ(limit, 8e-3);
 }
 
+TEST(TimeStepChoice, InTheWallZoneLongerStepsOnlyForASlowBodyWhenAllowed) {
+  auto n = numerics(8e-3);
+  // Off by default: k in the zone whatever the speed.
+  EXPECT_EQ(choose_time_step(n, body(0.006, 0.0, 0.0), kWide, 1.0), 1e-3);
+  n.time_step_wall_zone_max_s = 4e-3;
+  // At rest 6 mm from the wall: up to the zone's own longest step, not time_step_max_s.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.0, 0.0), 0.004, 1.0), 4e-3);
+  // Slow, 0.02 m/s: four steps of 4e-3 s cover 0.32 mm; the interface moves 0.08 mm per
+  // step, within 1/32 of a 4 mm row (0.125 mm).
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.02, 0.0), 0.004, 1.0), 4e-3);
+  // Four steps must not reach the wall: 0.5 mm away, 2e-3 (0.16 mm in four).
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0002, 0.02, 0.0), kWide, 1.0), 2e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.00015, 0.02, 0.0), kWide, 1.0), 1e-3);
+  // Rolling at 0.19 m/s (the rho_f = 1000 ball on tread 1) in 6 mm rows: k (2e-3 s would
+  // move it 0.38 mm, more than 1/32 of the row, although 1/8 of it outside the zone).
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.19, 0.0), 0.006, 1.0), 1e-3);
+  // Arriving at 0.5 m/s: k.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.0, -0.5), 0.004, 1.0), 1e-3);
+  // Real contact (or no interface): k.
+  EXPECT_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), kWide, 1.0), 1e-3);
+  // The controller's limit binds there too.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.0, 0.0), kWide, 1.0, 2e-3), 2e-3);
+  // Just outside the zone a slow body keeps the longer of the two rules.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0301, 0.0, 0.0), kWide, 1.0), 8e-3);
+}
+
 TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
   const auto n = numerics(8e-3);
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -89,6 +89,13 @@ struct NumericsSpec {
   /// of the patches its interface cuts (k itself moves it by up to 1/8 of the stairs' 4 mm
   /// rows at 0.5 m/s).
   double time_step_patch_fraction = 0.125;
+  /// Inside the wall zone (ours; 0 = off, the default: every step there is time_step_s).
+  /// A body in the zone but not in real contact may take steps k 2^j up to this length
+  /// (at most time_step_max_s) while at its speed it needs at least four of them to reach
+  /// the wall itself and moves by at most a quarter of what time_step_patch_fraction allows
+  /// elsewhere; the step-length controller still bounds it. For a ball at rest on a wall
+  /// (a ball rolling on it at 0.2 m/s still takes k: core/time_step_choice.hpp).
+  double time_step_wall_zone_max_s = 0.0;
   double end_time_s = 5.0;
   int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)
   double newton_rel_tol = 1.0e-8;    ///< stop when |R| <= rel_tol |R_0| ...

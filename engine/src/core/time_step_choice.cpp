@@ -21,16 +21,25 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
                         double history_limit_s) {
   const double k = n.time_step_s;
   if (!(n.time_step_max_s > k)) return k;  // off (0), or no longer step allowed
-  const double longest_s = history_limit_s > 0.0 ? std::min(n.time_step_max_s, history_limit_s) : n.time_step_max_s;
+  const double history_s = history_limit_s > 0.0 ? history_limit_s : n.time_step_max_s;
+  const double longest_s = std::min(n.time_step_max_s, history_s);
+  // In the wall zone only up to time_step_wall_zone_max_s (0: k), and never in real contact.
+  const double longest_in_zone_s =
+      f.min_distance_m > 0.0 ? std::min(std::max(k, n.time_step_wall_zone_max_s), longest_s) : k;
   const double gap_m = f.min_distance_m - n.time_step_wall_zone_m;
-  if (!(gap_m > 0.0)) return k;
   const double speed_mps = std::hypot(f.mean_vx_mps, f.mean_vy_mps);
-  if (!std::isfinite(speed_mps)) return k;
+  if (!std::isfinite(speed_mps) || !std::isfinite(f.min_distance_m)) return k;
   // A longer step must not overshoot the end (t accumulates rounding: a little slack).
   const double time_left_s = n.end_time_s - time_s + 1e-6 * k;
   double chosen = k;
   for (double longer = 2.0 * k; longer <= longest_s * (1.0 + 1e-12); longer *= 2.0) {
-    if (kStepsToWallZone * speed_mps * longer > gap_m || longer > time_left_s) break;
+    // Outside the zone: at least kStepsToWallZone such steps to reach it. Inside (or
+    // about to enter): as many to reach the wall itself.
+    const bool outside_zone_ok = gap_m > 0.0 && kStepsToWallZone * speed_mps * longer <= gap_m;
+    const bool in_zone_ok = longer <= longest_in_zone_s * (1.0 + 1e-12) &&
+                            kStepsToWallZone * speed_mps * longer <= f.min_distance_m &&
+                            speed_mps * longer <= kWallZonePatchFraction * n.time_step_patch_fraction * cut_patch_side_m;
+    if (!(outside_zone_ok || in_zone_ok) || longer > time_left_s) break;
     if (speed_mps * longer > n.time_step_patch_fraction * cut_patch_side_m) break;
     chosen = longer;
   }

@@ -16,8 +16,12 @@
 /// (v the body's mean velocity, min_distance its interface's distance to the walls, h_cut
 /// the shortest side of the patches its interface cuts), and not past end_time_s. The
 /// second condition makes a body approaching a wall come down to k step by step, at
-/// least kStepsToWallZone steps before it enters the zone; a body inside the zone (or
-/// without an interface: min_distance 0) always takes k. The third keeps the interface
+/// least kStepsToWallZone steps before it enters the zone; a body inside the zone takes k,
+/// or with numerics.time_step_wall_zone_max_s > 0 steps up to that length as long as
+///   kStepsToWallZone * |v| * k 2^j <= min_distance and
+///   |v| * k 2^j <= kWallZonePatchFraction * time_step_patch_fraction * h_cut
+/// (a ball resting on a wall, not one rolling on it); in real contact (or without an
+/// interface: min_distance 0) always k. The third keeps the interface
 /// from crossing more of a patch per step than k does in the thin rows: the graded rows
 /// above the treads reach 10 cm up, and there 8e-3 s steps (3.5 mm in 21 mm rows) failed
 /// where the cut moved past nodes (rho_f = 100 at t = 6.2 s, session 17). Besides, the
@@ -34,6 +38,14 @@ namespace fsi::core {
 
 /// A long step may cover at most this fraction (its inverse) of the way to the wall zone.
 inline constexpr double kStepsToWallZone = 4.0;
+
+/// In the wall zone a longer step may move the interface by only this part of what
+/// time_step_patch_fraction allows elsewhere. A ball rolling on tread 1 at 0.19 m/s in
+/// steps of 4e-3 s (0.77 mm, 1/8 of the 6 mm rows it cut) met cut changes that k takes in
+/// its stride with residuals of 1e4 at their start and three unconverged steps; at k it
+/// moves 0.19 mm (1/32). A ball at rest on the floor (|v| < 0.017 m/s) still takes 8e-3 s
+/// steps: 69 instead of 500 for 0.5 s, the same motion (docs/solver.md, session 19).
+inline constexpr double kWallZonePatchFraction = 0.25;
 
 /// A step that converged at its first attempt in at most this many Newton iterations lets
 /// the next one be twice as long. Calm flight takes 4-7 at 8e-3 s (and 3-5 at k); the

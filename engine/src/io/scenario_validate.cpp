@@ -83,10 +83,16 @@ void check_numerics(const NumericsSpec& n, const KeyPath& at) {
   }
 }
 
-// Longer steps inside the contact force's reach would let one step carry the body deep
-// into it (the force is explicit in a step).
+// Longer steps inside the contact force's reach could let one step carry the body deep
+// into it (the force is explicit in a step): a body comes down to k before the zone, and
+// goes on there only with what time_step_wall_zone_max_s allows.
 void check_time_step_zone(const Scenario& s, const KeyPath& root) {
   const NumericsSpec& n = s.numerics;
+  if (n.time_step_wall_zone_max_s > 0.0 &&
+      (n.time_step_wall_zone_max_s < n.time_step_s || n.time_step_wall_zone_max_s > n.time_step_max_s))
+    fail(root / "numerics" / "time_step_wall_zone_max_s",
+         "must be 0 (off) or in [time_step_s, time_step_max_s] = [" + number_text(n.time_step_s) + ", " +
+             number_text(n.time_step_max_s) + "] s, got " + number_text(n.time_step_wall_zone_max_s));
   if (!(n.time_step_max_s > 0.0)) return;
   if (n.time_step_max_s < n.time_step_s)
     fail(root / "numerics" / "time_step_max_s",
@@ -95,7 +101,7 @@ void check_time_step_zone(const Scenario& s, const KeyPath& root) {
   if (s.contact.gamma_c > 0.0 && n.time_step_wall_zone_m < s.contact.dist0_m)
     fail(root / "numerics" / "time_step_wall_zone_m",
          "must be at least contact.dist0_m = " + number_text(s.contact.dist0_m) +
-             " m when time_step_max_s > 0 (no long steps where the contact force acts), got " +
+             " m when time_step_max_s > 0 (bodies come down to time_step_s before the contact force acts), got " +
              number_text(n.time_step_wall_zone_m));
 }
 
