@@ -88,6 +88,10 @@ void check_numerics(const NumericsSpec& n, const KeyPath& at) {
 // goes on there only with what time_step_wall_zone_max_s allows.
 void check_time_step_zone(const Scenario& s, const KeyPath& root) {
   const NumericsSpec& n = s.numerics;
+  if (n.time_step_wall_zone_max_s > 0.0 && !(n.time_step_max_s > 0.0))
+    fail(root / "numerics" / "time_step_wall_zone_max_s",
+         "must be 0 (off) while time_step_max_s is 0 (every step time_step_s), got " +
+             number_text(n.time_step_wall_zone_max_s));
   if (n.time_step_wall_zone_max_s > 0.0 &&
       (n.time_step_wall_zone_max_s < n.time_step_s || n.time_step_wall_zone_max_s > n.time_step_max_s))
     fail(root / "numerics" / "time_step_wall_zone_max_s",
