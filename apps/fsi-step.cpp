@@ -2,7 +2,8 @@
 // answers each with exactly one JSON line on stdout (nothing else goes to stdout);
 // errors are answers too ({"error": "..."}), never the end of the session. EOF or
 // "quit" ends it. Commands: step [N], render FILE.png [field=..] [zoom=..] [size=WxH]
-// [mesh=0|1], functionals, set KEY VALUE, numerics, save FILE, load FILE, help, quit
+// [mesh=0|1], functionals, set KEY VALUE, numerics, save FILE, load FILE, remesh
+// SCENARIO.json, scenario FILE.json, help, quit
 // (see apps/common/step_session.hpp).
 //
 //   fsi-step SCENARIO.json [--set KEY=VALUE ...] [--exit-on-error]

@@ -4,6 +4,7 @@
 
 #include <fsi/error.hpp>
 #include <fsi/png.hpp>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -27,6 +28,8 @@ constexpr const char* kCommands[] = {
     "numerics",
     "save FILE",
     "load FILE",
+    "remesh SCENARIO.json   (go on on that scenario's mesh: everything else must be the same)",
+    "scenario FILE.json   (writes the scenario in use: its numerics as set, its mesh as remeshed)",
     "help",
     "quit"};
 
@@ -136,6 +139,32 @@ std::optional<nlohmann::ordered_json> StepSession::handle(const std::string& lin
       } else {
         load_checkpoint(engine_, w[1]);
       }
+      auto j = ok();
+      j["file"] = w[1];
+      return j;
+    }
+    if (c == "remesh") {
+      want_args(w, 1, 1, "remesh SCENARIO.json");
+      // The run's scenario (with the numerics set in this session) on the file's mesh.
+      Scenario remeshed = engine_.scenario();
+      remeshed.numerics = numerics_;
+      remeshed.mesh = load_scenario(w[1]).mesh;
+      Engine next(remeshed);
+      next.remesh_from(engine_);
+      engine_ = std::move(next);
+      renderer_.reset();  // it may hold the old mesh's buffers
+      auto j = ok();
+      j["file"] = w[1];
+      j["nodes"] = engine_.view().nodes.size();
+      return j;
+    }
+    if (c == "scenario") {
+      want_args(w, 1, 1, "scenario FILE.json");
+      Scenario s = engine_.scenario();
+      s.numerics = numerics_;
+      std::ofstream out(w[1], std::ios::trunc);
+      out << to_json(s) << '\n';
+      if (!out) throw InputError(w[1], "", "cannot write the scenario");
       auto j = ok();
       j["file"] = w[1];
       return j;

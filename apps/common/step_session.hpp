@@ -13,6 +13,9 @@
 ///                             validated like a scenario file
 ///   numerics                  the numerical parameters in use
 ///   save FILE / load FILE     checkpoints (fsi::save_checkpoint / load_checkpoint)
+///   remesh SCENARIO.json      the run goes on on that file's mesh (Engine::remesh_from);
+///                             the rest of the file is ignored, the run's scenario kept
+///   scenario FILE.json        writes the scenario in use (numerics as set, mesh as remeshed)
 ///   help                      the command list
 ///   quit                      ends the session
 /// Answers: {"ok": true, "t": ..., "step": ..., ...} or {"error": "..."}; an error never

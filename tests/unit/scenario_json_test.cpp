@@ -77,7 +77,7 @@ TEST(ScenarioJson, WritesEveryField) {
        {"\"name\"", "\"blocks\"", "\"from_m\"", "\"corners\"", "\"refinements\"", "\"walls\"",
         "\"initial_velocity_mps\"", "\"viscosity_m2ps\"", "\"lambda_pa\"", "\"gravity_mps2\"",
         "\"failure_policy\"", "\"identity_gap_m\"", "\"cip_wall_film_factor\"", "\"cut_snap\"",
-        "\"cut_snap_distance_m\"", "\"cavitation_pressure_pa\"", "\"dist0_m\"", "\"range_max\"", "\"mesh_overlay\""}) {
+        "\"cut_snap_distance_m\"", "\"cavitation_pressure_pa\"", "\"dist0_m\"", "\"range_max\"", "\"mesh_overlay\"", "\"y_right\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key;
   }
 }
@@ -311,6 +311,26 @@ TEST(ScenarioJson, ChecksMappedBlocks) {
       R"({"mesh": {"blocks": [{"x": [)" + piece(0, 2, 4) + "], \"y\": [" + unit +
       R"(], "mapped": true, "corners": [[-1, -1], [1, -1], [1, 0.5], [-1, 0.5]]}]}})";
   expect_parse_error(wide, "/mesh/blocks/0/x", {"must cover [0, 1]", "got [0, 2]"});
+}
+
+TEST(ScenarioJson, ChecksTheRightSideRowsOfAFanBlock) {
+  const std::string unit = piece(0, 1, 4);
+  auto fan = [&](const std::string& y_right) {
+    return R"({"mesh": {"blocks": [{"x": [)" + unit + "], \"y\": [" + unit + R"(], "mapped": true,)" +
+           R"( "corners": [[-1, -1], [1, -1], [1, 0.5], [-1, 0.5]], "y_right": [)" + y_right + "]}]}}";
+  };
+  const std::string graded = R"({"from_m": 0, "to_m": 1, "patches": 4, "first_m": 0.1, "last_m": 0.4})";
+  const fsi::Scenario with = fsi::parse_scenario(fan(graded), "fan.json");
+  EXPECT_EQ(with.mesh.blocks[0].y_right.size(), 1u);
+  // Without right-side rows (or with the left side's) it is the plain mapped block.
+  const std::string plain = fsi::fingerprint(fsi::parse_scenario(fan(""), "fan.json"));
+  EXPECT_NE(fsi::fingerprint(with), plain);
+  expect_parse_error(fan(piece(0, 1, 5)), "/mesh/blocks/0/y_right", {"as many patches as y (4", "got 5"});
+  expect_parse_error(fan(piece(0, 2, 4)), "/mesh/blocks/0/y_right", {"must cover [0, 1]", "got [0, 2]"});
+  // An axis-aligned block has the same rows on both sides.
+  const std::string box = R"({"mesh": {"blocks": [{"x": [)" + piece(-1, 1, 4) + "], \"y\": [" + piece(-1, 0.5, 4) +
+                          "], \"y_right\": [" + unit + "]}]}}";
+  expect_parse_error(box, "/mesh/blocks/0/y_right", {"only allowed in a mapped block"});
 }
 
 TEST(ScenarioJson, SurvivesDeepNestingAndHugeInput) {

@@ -1,4 +1,4 @@
-// The stairs scenarios (Example 2): the seven blocks merge into one conforming mesh whose
+// The stairs scenarios (Example 2): the nine blocks merge into one conforming mesh whose
 // boundary is exactly the walls plus the open top, with fine rows on every landing zone.
 #include <gtest/gtest.h>
 
@@ -70,6 +70,33 @@ TEST(StairsGeometry, FineRowsOnThePlaneAndTheTreads) {
   EXPECT_GT(fsi::mesh::distance_to_segment(s.walls[1], c) - s.body.radius_m, 0.4);
   EXPECT_NEAR(fsi::mesh::distance_to_walls(s.walls, c).distance_m - s.body.radius_m, 0.2, 1e-12);
   EXPECT_EQ(fsi::mesh::distance_to_walls(s.walls, c - Eigen::Vector2d(0, 1)).wall, 1);
+}
+
+/// The largest side ratio of the patches farther than `from_walls_m` from every wall.
+double flattest_patch_in_open_fluid(const fsi::Scenario& s, double from_walls_m) {
+  const fsi::mesh::PatchMesh mesh = fsi::mesh::build_patch_mesh(s.mesh, s.walls);
+  double flattest = 1.0;
+  for (const fsi::mesh::Patch& p : mesh.patches) {
+    const Eigen::Vector2d centre = mesh.nodes[p.node[4]];
+    if (fsi::mesh::distance_to_walls(s.walls, centre).distance_m > from_walls_m)
+      flattest = std::max(flattest, p.size_m / p.min_size_m);
+  }
+  return flattest;
+}
+
+TEST(StairsGeometry, ThinRowsEndBesideTheRisers) {
+  // A tread's 4 mm rows fan out to coarse rows within the fan block beside the riser
+  // below it (BlockSpec::y_right): the flattest patches are in the fans, flatter the
+  // closer to the riser's top corner (6 at 0.15 m from it, 3.4 at 0.3 m). Until session
+  // 20 the rows went on over the lower treads as 4 mm x 6 cm patches (ratio 15) at any
+  // distance from the walls, where each ball going down a step stalled Newton.
+  for (const char* file : {"stairs_rho1000.json", "../../../tests/data/stairs_coarse.json"}) {
+    SCOPED_TRACE(file);
+    const fsi::Scenario s = fsi::load_scenario(kStairs / file);
+    EXPECT_LT(flattest_patch_in_open_fluid(s, 0.15), 6.5);
+    EXPECT_LT(flattest_patch_in_open_fluid(s, 0.3), 4.0);
+    EXPECT_LT(flattest_patch_in_open_fluid(s, 0.5), 3.0);
+  }
 }
 
 TEST(StairsGeometry, ScenariosDifferOnlyInFluidDensityAndContact) {

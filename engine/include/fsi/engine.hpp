@@ -77,6 +77,15 @@ class Engine {
   const State& state() const;
   /// Restore a state saved from an engine of the same scenario.
   void set_state(const State& state);
+  /// Continues `source`'s run on this engine's mesh (remeshing: a run goes on on a better
+  /// mesh without starting again). This engine's scenario must be the source's up to
+  /// `mesh` (throws InputError otherwise, and when a node lies outside the old mesh).
+  /// Fields are interpolated node by node; the interface is rebuilt on the new mesh from
+  /// the displacement that built it on the old one. Time and step number carry over.
+  /// Where both meshes have the same nodes the fields are the same; the next steps are
+  /// not bit-identical to the source's (the previous level's interface is approximated
+  /// by the current one, see core/engine.cpp).
+  void remesh_from(const Engine& source);
   /// Change a numerical parameter between steps (time step, Newton budget, ...).
   /// scenario() reports the new numerics, and checkpoints saved afterwards carry them.
   void set_numerics(const NumericsSpec& numerics);

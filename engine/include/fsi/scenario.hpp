@@ -37,6 +37,14 @@ struct BlockSpec {
   std::vector<AxisPiece> y;  ///< patch lines in the second direction
   bool mapped = false;
   std::array<Point2, 4> corners{};
+  /// Mapped blocks only: the patch lines along the right side (s = 1), in unit-square
+  /// coordinates like `y` (which then gives those along the left side, s = 0), with the
+  /// same number of patches. Each line of patches runs straight from its node on the left
+  /// side to its node on the right side (transfinite interpolation between the two
+  /// sides), so a block can carry the thin rows above a tread on its left over into coarse
+  /// rows on its right and still meet both neighbours node to node: the stairs' fan
+  /// blocks beside each riser. Empty: the same as `y`.
+  std::vector<AxisPiece> y_right;
 };
 
 struct MeshSpec {

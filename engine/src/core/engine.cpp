@@ -133,6 +133,56 @@ struct Engine::Impl {
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
   }
 
+  /// The FE function `coeffs` of `cut` (another mesh's) at every node position `x` of
+  /// this mesh's cut mesh: nodal interpolation onto this mesh.
+  static Eigen::VectorXd sample(const fe::CutMesh& cut, const fe::PatchBuckets& cut_buckets,
+                                const Eigen::VectorXd& coeffs, const std::vector<mesh::Vec2>& x) {
+    Eigen::VectorXd out(kFieldsPerNode * static_cast<Eigen::Index>(x.size()));
+    for (std::size_t n = 0; n < x.size(); ++n) {
+      const fe::Location loc = fe::locate(cut, cut_buckets, x[n], 1e-6);
+      if (loc.element < 0) {
+        std::ostringstream where;
+        where << "node " << n << " at (" << x[n].x() << ", " << x[n].y()
+              << ") m of the new mesh lies outside the old mesh: a remeshed run needs the same domain";
+        throw InputError("<remesh>", "/mesh", where.str());
+      }
+      for (int f = 0; f < kFieldsPerNode; ++f)
+        out[kFieldsPerNode * static_cast<Eigen::Index>(n) + f] = fe::evaluate(cut, loc, coeffs, kFieldsPerNode, f);
+    }
+    return out;
+  }
+
+  /// Takes over `src`'s run on this mesh. Level m's geometry is built here the way the step
+  /// that made it built it on the old mesh: the cut of the IPS level set of u^{m-1}
+  /// (12.4). Level m-1's geometry would need u^{m-2}, which no state keeps: it is taken
+  /// equal to level m's (the level m-1 solution itself is interpolated exactly as level
+  /// m's), as at t = 0. That changes only where the previous displacement has its kink,
+  /// by the interface's motion in one step. Both solutions are interpolated at this mesh's
+  /// node positions (moved nodes included); where the meshes share nodes nothing changes.
+  void remesh_from(const Impl& src) {
+    const fe::CutData data = fe::cut_data(
+        mesh, interface::ips_level_set(src.scenario.body, src.cut_prev, src.buckets, src.state.previous_solution),
+        cut_options());
+    const fe::CutMesh cut = fe::build_cut_mesh(mesh, data);
+    State s;
+    s.time_s = src.state.time_s;
+    s.step = src.state.step;
+    s.time_step_s = src.state.time_step_s;
+    s.time_step_limit_s = src.state.time_step_limit_s;
+    s.solution = sample(src.cut_cur, src.buckets, src.state.solution, cut.x);
+    s.previous_solution = sample(src.cut_prev, src.buckets, src.state.previous_solution, cut.x);
+    for (int i = 0; i < mesh.num_nodes(); ++i)
+      if (mesh.on_wall[i]) {  // no-slip, as every step leaves it (interpolation gives 0 up to rounding)
+        s.solution.segment(kFieldsPerNode * i, 2).setZero();
+        s.previous_solution.segment(kFieldsPerNode * i, 2).setZero();
+      }
+    s.corner_sign = s.previous_corner_sign = data.corner_sign;
+    s.edge_cut = s.previous_edge_cut = data.edge_cut;
+    state = std::move(s);  // no factorization_origin: the first step factorizes afresh
+    newton.reset();
+    rebuild_from_state();
+  }
+
   int last_ips_failures = 0;  ///< of the latest attempt (diagnostics for the step report)
 
   /// One attempt at a step of size k on the geometry cut_next. Does not touch the state.
@@ -358,6 +408,17 @@ void Engine::set_state(const State& state) {
   impl_->state = state;
   impl_->restore_factorization();
   impl_->rebuild_from_state();
+}
+
+void Engine::remesh_from(const Engine& source) {
+  // Everything but the mesh must be the same: compare the fingerprints (physics and
+  // discretization, not the solver controls) with this engine's mesh put into the source's.
+  Scenario same = source.scenario();
+  same.mesh = impl_->scenario.mesh;
+  if (fingerprint(same) != fingerprint(impl_->scenario))
+    throw InputError("<remesh>", "", "the new scenario differs from the run's in more than its mesh "
+                                     "(body, walls, materials, contact and numerics must be the same)");
+  impl_->remesh_from(*source.impl_);
 }
 
 FieldView Engine::view() const {

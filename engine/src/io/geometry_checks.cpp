@@ -142,6 +142,27 @@ double distance_to_segment(const Point2& p, const Segment2& s) {
   return std::hypot(p.x - (s.a.x + t * dx), p.y - (s.a.y + t * dy));
 }
 
+/// A mapped block's right-side rows: unit-square coordinates covering [0, 1] with as many
+/// patches as its left side (`y`), so that every row runs from one side to the other.
+void check_right_side(const BlockSpec& block, const KeyPath& here) {
+  if (!block.mapped) {
+    fail(here / "y_right", "is only allowed in a mapped block (\"mapped\": true with corners): "
+                           "an axis-aligned block has the same rows on both sides");
+  }
+  const Interval span = check_axis(block.y_right, here / "y_right");
+  if (std::abs(span.lo) > kRelTol || std::abs(span.hi - 1.0) > kRelTol) {
+    fail(here / "y_right", "must cover [0, 1] (unit-square coordinates, like y), got " + interval_text(span));
+  }
+  int left = 0, right = 0;
+  for (const AxisPiece& p : block.y) left += p.patches;
+  for (const AxisPiece& p : block.y_right) right += p.patches;
+  if (left != right) {
+    fail(here / "y_right", "must have as many patches as y (" + std::to_string(left) +
+                               ", its rows run from the left side to the right side), got " +
+                               std::to_string(right));
+  }
+}
+
 }  // namespace
 
 double block_node_count(const BlockSpec& block, int refinements) {
@@ -172,6 +193,7 @@ void check_mesh(const MeshSpec& mesh, const KeyPath& at) {
       }
       check_corners(block.corners, here);
     }
+    if (!block.y_right.empty()) check_right_side(block, here);
     nodes += block_node_count(block, mesh.refinements);
   }
   if (nodes > kMaxNodes) {

@@ -101,6 +101,7 @@ void visit_fields(V& v, S& b) {
   v("y", b.y, List<Fields>{1, 64, {}});
   v("mapped", b.mapped, Flag{});
   v("corners", b.corners, kCoordinate);
+  v("y_right", b.y_right, List<Fields>{0, 64, {}});
 }
 
 template <class V, Like<MeshSpec> S>

@@ -70,6 +70,12 @@ PatchMesh build_patch_mesh(const MeshSpec& spec, const std::vector<Segment2>& wa
   for (const BlockSpec& block : spec.blocks) {
     const std::vector<double> xs = refine_lines(axis_lines(block.x), spec.refinements);
     const std::vector<double> ys = refine_lines(axis_lines(block.y), spec.refinements);
+    // Rows along the right side (a fan block): the same count, validated by check_mesh.
+    const std::vector<double> ys_right =
+        block.y_right.empty() ? ys : refine_lines(axis_lines(block.y_right), spec.refinements);
+    const bool fan = !block.y_right.empty();
+    if (ys_right.size() != ys.size())
+      throw std::invalid_argument("mesh block: y_right has another number of patches than y");
     const int nx = static_cast<int>(xs.size()) - 1, ny = static_cast<int>(ys.size()) - 1;
     const BlockMap map{block};
     // Fine grid of the block: (2 nx + 1) x (2 ny + 1) nodes; midpoints halve the lines.
@@ -81,7 +87,12 @@ PatchMesh build_patch_mesh(const MeshSpec& spec, const std::vector<Segment2>& wa
     for (int j = 0; j < fy; ++j)
       for (int i = 0; i < fx; ++i) {
         const int before = mesh.num_nodes();
-        id[j * fx + i] = merger.add(map(fine(xs, i), fine(ys, j)), mesh.nodes);
+        // Transfinite between the sides: row j runs straight from its left node to its
+        // right node, so midpoints stay midpoints (t is linear in s). Without y_right, t is
+        // the left value itself (not a blend that could round it differently).
+        const double s = fine(xs, i);
+        const double t = fan ? (1.0 - s) * fine(ys, j) + s * fine(ys_right, j) : fine(ys, j);
+        id[j * fx + i] = merger.add(map(s, t), mesh.nodes);
         if (mesh.num_nodes() > before) mesh.is_corner.push_back(i % 2 == 0 && j % 2 == 0);
       }
     for (int pj = 0; pj < ny; ++pj)
