@@ -54,6 +54,27 @@ TEST(FailurePolicy, AStepThatStalledFarDownIsAcceptedWithoutHalving) {
   EXPECT_LT(r.residual_norms.back(), 0.5 * r.residual_norms.front()) << r.message;
 }
 
+TEST(FailurePolicy, ABestAttemptAboveTheBoundIsRejectedNotAccepted) {
+  fsi::Engine engine = one_iteration_per_attempt(0.0);
+  fsi::NumericsSpec n = engine.scenario().numerics;
+  n.accept_best_max_residual = 1e-30;  // no attempt of one iteration gets there
+  engine.set_numerics(n);
+  const fsi::State before = engine.state();
+  const fsi::StepReport r = engine.step();
+  EXPECT_FALSE(r.accepted) << r.message;
+  EXPECT_EQ(halvings(r), 2) << "halved as usual before giving up: " << r.message;
+  EXPECT_EQ(engine.state().time_s, before.time_s);
+  EXPECT_EQ(engine.state().solution, before.solution);
+  EXPECT_NE(r.message.find("accept_best_max_residual"), std::string::npos) << r.message;
+  // Above the best's residual the bound changes nothing: accepted and flagged.
+  n.accept_best_max_residual = 1e6;
+  engine.set_numerics(n);
+  const fsi::StepReport again = engine.step();
+  EXPECT_TRUE(again.accepted) << again.message;
+  EXPECT_FALSE(again.converged);
+  EXPECT_GT(engine.state().time_s, before.time_s);
+}
+
 TEST(FailurePolicy, AStepThatDidNotGetFarEnoughDownIsStillHalved) {
   // One Newton iteration does not take the residual down by 1e-12: halved as before.
   fsi::Engine engine = one_iteration_per_attempt(1e-12);

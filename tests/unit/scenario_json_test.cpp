@@ -117,6 +117,7 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   e.numerics.time_step_max_s = 8e-3;  // longer steps away from the walls: like halve_step
   e.numerics.time_step_wall_zone_m = 0.05;
   e.numerics.time_step_wall_zone_max_s = 4e-3;
+  e.numerics.accept_best_max_residual = 10.0;
   EXPECT_EQ(fsi::fingerprint(e), f);
   EXPECT_NE(fsi::io::fingerprint_v3(e), fsi::io::fingerprint_v3(a));  // format 3 covered them
   fsi::Scenario g = a;
@@ -191,6 +192,8 @@ TEST(ScenarioJson, RejectsValuesOutOfRange) {
                      "/numerics/newton_budget", {"[1, 100]"});
   expect_parse_error(R"({"numerics": {"newton_budget": -9223372036854775808}})",
                      "/numerics/newton_budget", {"[1, 100]"});
+  expect_parse_error(R"({"numerics": {"accept_best_max_residual": -1}})", "/numerics/accept_best_max_residual",
+                     {"[0, 1e+12] (0: no bound)", "got -1"});
   expect_parse_error(R"({"mesh": {"refinements": 5}})", "/mesh/refinements", {"[0, 4]", "got 5"});
   expect_parse_error(R"({"output": {"width_px": 8000}})", "/output/width_px", {"[16, 7680]"});
   expect_parse_error(R"({"output": {"height_px": 15}})", "/output/height_px", {"[16, 7680]"});

@@ -290,6 +290,7 @@ struct Engine::Impl {
     Eigen::VectorXd best_x;
     std::string policy_note;  // why an unconverged step was accepted as it is, or rejected
     double best_k = k, best_reduction = std::numeric_limits<double>::infinity();
+    double best_final = std::numeric_limits<double>::infinity();  // its last scaled residual
     ResidualPeak best_peak;
     for (int attempt_no = 0;; ++attempt_no) {
       Eigen::VectorXd x;
@@ -300,6 +301,7 @@ struct Engine::Impl {
       const core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, attempt_no, best_x.size() > 0);
       if (verdict.candidate && r.relative_residual < best_reduction) {
         best_reduction = r.relative_residual;
+        best_final = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.back();
         best_x = x;
         best_k = k;
         best_peak = report.largest_residual;
@@ -323,6 +325,17 @@ struct Engine::Impl {
         report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
                                  "Newton did not converge: retrying with k = " + std::to_string(k)});
         continue;
+      }
+      const double bound = scenario.numerics.accept_best_max_residual;
+      if (verdict.action == core::AttemptAction::accept_best && bound > 0.0 && !(best_final <= bound)) {
+        // The best attempt solves nothing: stop here rather than go on from it.
+        report.accepted = false;
+        std::ostringstream why;
+        why << "no attempt got below accept_best_max_residual = " << bound << " (the best ended at "
+            << best_final << " scaled): rolled back to the state before the step";
+        report.events.push_back({StepEvent::Kind::rolled_back, state.time_s, {}, -1, why.str()});
+        policy_note = why.str();
+        break;
       }
       if (verdict.action == core::AttemptAction::accept_best) {
         k = best_k;

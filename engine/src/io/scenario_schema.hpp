@@ -146,6 +146,7 @@ void visit_fields(V& v, S& n) {
   v("max_halvings", n.max_halvings, Int{0, 20});
   v("accept_flagged_reduction", n.accept_flagged_reduction, Real{0.0, 1.0, false, true});
   v("accept_flagged_max_residual", n.accept_flagged_max_residual, Real{0.0, 1.0e6});
+  v("accept_best_max_residual", n.accept_best_max_residual, Real{0.0, 1.0e12, false, false, "(0: no bound)"});
   v("cip_gamma", n.cip_gamma, Real{0.0, 1.0e3});
   v("cip_transient_weight", n.cip_transient_weight, Real{0.0, 1.0e3});
   v("cip_wall_film_factor", n.cip_wall_film_factor, Real{0.0, 1.0e3});
