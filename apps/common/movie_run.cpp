@@ -20,6 +20,7 @@
 #include "movie_color_range.hpp"
 #include "progress_meter.hpp"
 #include "run_summary.hpp"
+#include "scenario_overrides.hpp"
 
 namespace fsi::app {
 namespace {
@@ -31,13 +32,6 @@ namespace fs = std::filesystem;
 /// spending hours on it. Normal runs stay below 1e-2.
 constexpr double kLostBodyMassError = 0.5;
 
-/// The scenario the run uses, --set overrides applied, as JSON that loads again
-/// (fsi-movie scenario.json OUT2 repeats the run; the study scripts read its parameters).
-void write_effective_scenario(const Scenario& scenario, const fs::path& file) {
-  std::ofstream out(file, std::ios::trunc);
-  out << to_json(scenario) << '\n';
-  if (!out) throw InputError(file.string(), "", "cannot write the run's scenario");
-}
 
 class MovieRun {
  public:
@@ -67,7 +61,9 @@ class MovieRun {
     spec_.title = scenario.name;
     spec_.range = movie_color_range(scenario, spec_.quantity, engine_.view());
     summary_.add_output(options.out_dir / "functionals.csv");
-    write_effective_scenario(scenario, options.out_dir / "scenario.json");
+    // The scenario the run uses, --set overrides applied (fsi-movie scenario.json OUT2
+    // repeats the run; the study scripts read its parameters).
+    write_scenario_file(scenario, (options.out_dir / "scenario.json").string());
     summary_.add_output(options.out_dir / "scenario.json");
     if (options.png) fs::create_directories(options.out_dir / "frames");
     if (options.vtu) fs::create_directories(options.out_dir / "vtk");

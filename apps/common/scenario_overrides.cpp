@@ -2,6 +2,7 @@
 #include "scenario_overrides.hpp"
 
 #include <fsi/error.hpp>
+#include <fstream>
 
 namespace fsi::app {
 
@@ -53,6 +54,12 @@ Scenario load_scenario_with_overrides(const std::string& file,
                                       const std::vector<Override>& overrides) {
   const Scenario base = load_scenario(file);
   return apply_overrides(base, overrides, file + " with --set");
+}
+
+void write_scenario_file(const Scenario& scenario, const std::string& file) {
+  std::ofstream out(file, std::ios::trunc);
+  out << to_json(scenario) << '\n';
+  if (!out) throw InputError(file, "", "cannot write the scenario");
 }
 
 }  // namespace fsi::app

@@ -36,4 +36,8 @@ Scenario apply_overrides(const Scenario& base, const std::vector<Override>& over
 Scenario load_scenario_with_overrides(const std::string& file,
                                       const std::vector<Override>& overrides);
 
+/// Writes `scenario` as JSON that loads again (fsi-movie's run scenario.json, fsi-step's
+/// `scenario FILE`). Throws InputError naming the file when it cannot be written.
+void write_scenario_file(const Scenario& scenario, const std::string& file);
+
 }  // namespace fsi::app

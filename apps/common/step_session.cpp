@@ -4,7 +4,6 @@
 
 #include <fsi/error.hpp>
 #include <fsi/png.hpp>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -162,9 +161,7 @@ std::optional<nlohmann::ordered_json> StepSession::handle(const std::string& lin
       want_args(w, 1, 1, "scenario FILE.json");
       Scenario s = engine_.scenario();
       s.numerics = numerics_;
-      std::ofstream out(w[1], std::ios::trunc);
-      out << to_json(s) << '\n';
-      if (!out) throw InputError(w[1], "", "cannot write the scenario");
+      write_scenario_file(s, w[1]);
       auto j = ok();
       j["file"] = w[1];
       return j;
