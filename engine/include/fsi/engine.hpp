@@ -47,6 +47,8 @@ struct StepReport {
   bool accepted = false;          ///< state advanced (false: rolled back)
   int newton_iterations = 0;
   int factorizations = 0;
+  /// GMRES iterations (numerics.krylov_iterations > 0), one solve with a factorization each.
+  int krylov_iterations = 0;
   std::vector<double> residual_norms;  ///< scaled residual before each iteration and at the end
   double time_step_s = 0.0;
   double time_s = 0.0;            ///< time after the step

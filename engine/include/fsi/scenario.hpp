@@ -110,6 +110,11 @@ struct NumericsSpec {
   double newton_abs_tol = 1.0e-10;   ///< ... or |R| <= abs_tol (scaled residual)
   /// Reuse the factorization while each iteration reduces the residual by this factor.
   double reuse_contraction = 0.2;
+  /// Where Newton needs the Jacobian at a new iterate: solve it by GMRES preconditioned
+  /// with the factorization held, up to this many GMRES iterations, and refactorize only
+  /// when that does not converge (ours, session 21; 0: refactorize every time). A
+  /// factorization of the stairs' 71k unknowns costs about 80 solves with one.
+  int krylov_iterations = 0;
   FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
   int max_halvings = 3;
   /// halve_step only (ours): an attempt that did not converge but brought its scaled

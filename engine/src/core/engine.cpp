@@ -208,6 +208,7 @@ struct Engine::Impl {
     no.rel_tol = scenario.numerics.newton_rel_tol;
     no.abs_tol = scenario.numerics.newton_abs_tol;
     no.reuse_contraction = scenario.numerics.reuse_contraction;
+    no.krylov_max_iterations = scenario.numerics.krylov_iterations;
     solve::NewtonResult r = newton.solve(system, x, no);
     if (r.factorization_point.size() > 0) {
       // Remember what determines the factorization now held, so a restored state can
@@ -221,6 +222,7 @@ struct Engine::Impl {
     }
     report.newton_iterations += r.iterations;
     report.factorizations += r.factorizations;
+    report.krylov_iterations += r.krylov_iterations;
     report.residual_norms.insert(report.residual_norms.end(), r.norms.begin(), r.norms.end());
     report.assembly_seconds += r.assembly_seconds;
     report.factorization_seconds += r.factorization_seconds;
@@ -370,6 +372,7 @@ struct Engine::Impl {
     std::ostringstream msg;
     msg << (report.converged ? "converged" : "NOT converged") << " in " << report.newton_iterations
         << " Newton iteration(s), " << report.factorizations << " factorization(s)";
+    if (report.krylov_iterations > 0) msg << ", " << report.krylov_iterations << " GMRES iteration(s)";
     if (!report.residual_norms.empty()) msg << ", residual " << report.residual_norms.front() << " -> " << report.residual_norms.back();
     if (const ResidualPeak& w = report.largest_residual; !report.converged && w.node >= 0)
       msg << "; largest residual: " << equation_name(w.equation) << " at node " << w.node << " ("

@@ -115,7 +115,8 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"time_step_wall_zone_m", n.time_step_wall_zone_m == defaults.time_step_wall_zone_m},
       {"time_step_patch_fraction", n.time_step_patch_fraction == defaults.time_step_patch_fraction},
       {"time_step_wall_zone_max_s", n.time_step_wall_zone_max_s == defaults.time_step_wall_zone_max_s},
-      {"accept_best_max_residual", n.accept_best_max_residual == defaults.accept_best_max_residual}};
+      {"accept_best_max_residual", n.accept_best_max_residual == defaults.accept_best_max_residual},
+      {"krylov_iterations", n.krylov_iterations == defaults.krylov_iterations}};
   for (const auto& [key, is_default] : at_default)
     if (is_default) writer.object["numerics"].erase(key);
   return std::move(writer.object);

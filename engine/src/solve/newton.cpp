@@ -1,7 +1,10 @@
 #include "solve/newton.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+
+#include "solve/gmres.hpp"
 
 namespace fsi::solve {
 namespace {
@@ -16,22 +19,29 @@ double NewtonSolver::norm(const Eigen::VectorXd& r) const {
                                        : r.cwiseAbs().maxCoeff();
 }
 
-bool NewtonSolver::refactorize(const core::FsiSystem& system, const Eigen::VectorXd& x,
-                               Eigen::VectorXd& r, NewtonResult& result) {
-  auto t0 = std::chrono::steady_clock::now();
+void NewtonSolver::assemble_jacobian(const core::FsiSystem& system, const Eigen::VectorXd& x,
+                                     Eigen::VectorXd& r, NewtonResult& result) {
+  const auto t0 = std::chrono::steady_clock::now();
   system.residual_and_jacobian(x, r, jacobian_);
   result.assembly_seconds += seconds_since(t0);
+  ++result.jacobians;
+}
+
+void NewtonSolver::scale_rows_by_jacobian() {
   // Row scaling for the residual norm: 1 / max_j |J_ij|.
   row_scale_.setZero(jacobian_.rows());
   for (int c = 0; c < jacobian_.outerSize(); ++c)
     for (SparseMatrix::InnerIterator it(jacobian_, c); it; ++it)
       row_scale_[it.row()] = std::max(row_scale_[it.row()], std::abs(it.value()));
   for (int i = 0; i < row_scale_.size(); ++i) row_scale_[i] = row_scale_[i] > 0.0 ? 1.0 / row_scale_[i] : 1.0;
+}
+
+bool NewtonSolver::factorize_assembled(const Eigen::VectorXd& x, NewtonResult& result) {
   if (!jacobian_.coeffs().allFinite()) {
     result.non_finite = true;
     return false;
   }
-  t0 = std::chrono::steady_clock::now();
+  const auto t0 = std::chrono::steady_clock::now();
   const bool ok = lu_->factorize(jacobian_);
   result.factorization_seconds += seconds_since(t0);
   ++result.factorizations;
@@ -40,20 +50,49 @@ bool NewtonSolver::refactorize(const core::FsiSystem& system, const Eigen::Vecto
   return ok;
 }
 
+bool NewtonSolver::refactorize(const core::FsiSystem& system, const Eigen::VectorXd& x,
+                               Eigen::VectorXd& r, NewtonResult& result) {
+  assemble_jacobian(system, x, r, result);
+  scale_rows_by_jacobian();
+  return factorize_assembled(x, result);
+}
+
 bool NewtonSolver::factorize_at(const core::FsiSystem& system, const Eigen::VectorXd& x) {
   NewtonResult ignored;
   Eigen::VectorXd r;
   return refactorize(system, x, r, ignored);
 }
 
+int NewtonSolver::krylov_direction(const Eigen::VectorXd& r, double rel_tol, const NewtonOptions& options,
+                                   NewtonResult& result, Eigen::VectorXd& dx) {
+  if (!jacobian_.coeffs().allFinite()) return -1;
+  const auto t0 = std::chrono::steady_clock::now();
+  const GmresResult g = gmres(
+      jacobian_, -r, [this](const Eigen::VectorXd& v) { return lu_->solve(v); }, row_scale_, rel_tol,
+      options.krylov_max_iterations, dx);
+  result.solve_seconds += seconds_since(t0);
+  result.krylov_iterations += g.iterations;
+  return g.converged ? g.iterations : -1;
+}
+
 NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd& x,
                                  const NewtonOptions& options) {
   NewtonResult result;
   Eigen::VectorXd r, r_try, x_try;
-  bool fresh = false;  // factorization built at the current iterate
+  const bool krylov = options.krylov_max_iterations > 0;
+  bool fresh = false;         // the factorization held was built at the current iterate
+  bool own_lu = false;        // ... or at least in this call (not at another step's geometry)
+  bool jacobian_at_x = false; // jacobian_ holds the Jacobian at the current iterate
   if (!lu_->factorized()) {
     if (!refactorize(system, x, r, result)) return result;
-    fresh = true;
+    fresh = own_lu = jacobian_at_x = true;
+  } else if (krylov) {
+    // With GMRES the first direction is the exact one, and the norm's row scale is the
+    // Jacobian of this step's start: a function of the state alone, so that a state
+    // restored from a checkpoint goes on bit for bit (only the factorization is restored).
+    assemble_jacobian(system, x, r, result);
+    scale_rows_by_jacobian();
+    jacobian_at_x = true;
   } else {
     const auto t0 = std::chrono::steady_clock::now();
     system.residual(x, r);
@@ -66,11 +105,11 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     return result;
   }
   // The tolerance is relative to the step's initial residual measured with the row scale
-  // of the factorization in use. A factorization reused from an earlier step carries that
-  // step's row scale, which on a changed cut can be off by orders of magnitude (a sliver
-  // sub-element's tiny row becomes a normal one); every refactorization therefore
-  // re-measures the initial residual with the new scale. Otherwise a step would "converge"
-  // six orders of magnitude short of the others.
+  // in use. A factorization reused from an earlier step carries that step's row scale,
+  // which on a changed cut can be off by orders of magnitude (a sliver sub-element's tiny
+  // row becomes a normal one); every new row scale (a refactorization, or with GMRES any
+  // new Jacobian) therefore re-measures the initial residual. Otherwise a step would
+  // "converge" six orders of magnitude short of the others.
   const Eigen::VectorXd r_start = r;
   double tol = std::max(options.rel_tol * current, options.abs_tol);
   const auto rescale_tolerance = [&] { tol = std::max(options.rel_tol * norm(r_start), options.abs_tol); };
@@ -78,17 +117,54 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     result.converged = true;
     return result;
   }
-  bool need_refactor = false;
+  // Chord steps (the factorization held, without a new Jacobian) only with a factorization
+  // of this step: one of another step's geometry throws the first iterate off by orders
+  // of magnitude (1e4 -> 1e10 on the stairs) and wastes the iteration.
+  bool need_exact = krylov && !own_lu;
   for (int it = 0; it < options.budget; ++it) {
     ++result.iterations;
-    if (need_refactor && !fresh) {
-      if (!refactorize(system, x, r, result)) break;
-      current = norm(r);
-      rescale_tolerance();
-      fresh = true;
+    // The direction: a chord step while the factorization contracts well; otherwise the
+    // Jacobian at x, solved by GMRES on the factorization held (krylov_max_iterations > 0)
+    // or by refactorizing at x (also when GMRES does not converge).
+    Eigen::VectorXd dx;
+    bool exact = fresh;  // dx solves the Jacobian at x (not a chord step)
+    if (need_exact && !fresh) {
+      if (krylov) {
+        if (!jacobian_at_x) {
+          assemble_jacobian(system, x, r, result);
+          scale_rows_by_jacobian();
+          current = norm(r);
+          rescale_tolerance();
+          jacobian_at_x = true;
+        }
+        // GMRES only as far as Newton can use it: the linear residual a little below what
+        // the tolerance asks of this iteration (Eisenstat and Walker's inexact Newton),
+        // never looser than 1e-2 nor tighter than krylov_rel_tol.
+        const double eta = std::clamp(0.1 * tol / current, options.krylov_rel_tol, 1e-2);
+        const int used = krylov_direction(r, eta, options, result, dx);
+        if (used >= 0) {
+          exact = true;
+          // A preconditioner that needs many iterations is stale (another step's
+          // geometry): a factorization here costs about 50 GMRES iterations and brings
+          // the next directions, of this step and the following ones, down to a few.
+          if (2 * used > options.krylov_max_iterations) {
+            if (!factorize_assembled(x, result)) break;
+            fresh = own_lu = true;
+          }
+        } else {
+          dx.resize(0);
+          if (!factorize_assembled(x, result)) break;
+          fresh = own_lu = exact = true;
+        }
+      } else {
+        if (!refactorize(system, x, r, result)) break;
+        current = norm(r);
+        rescale_tolerance();
+        fresh = own_lu = exact = jacobian_at_x = true;
+      }
     }
     auto t0 = std::chrono::steady_clock::now();
-    const Eigen::VectorXd dx = -lu_->solve(r);
+    if (dx.size() == 0) dx = -lu_->solve(r);
     result.solve_seconds += seconds_since(t0);
     double lambda = 1.0, trial = 0.0;
     for (int halving = 0; halving < 4; ++halving, lambda *= 0.5) {
@@ -100,23 +176,23 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
       if (trial < current) break;
     }
     if (!(trial < current)) {
-      // No decrease along this direction: with a stale factorization, refactorize and
+      // No decrease along this direction: after a chord step, take the Jacobian at x and
       // try again (the iteration still counts against the budget).
-      need_refactor = true;
-      if (fresh) break;  // even the exact Jacobian does not help: give up
+      need_exact = true;
+      if (exact) break;  // even the exact Jacobian does not help: give up
       continue;
     }
     // Keep the factorization while it contracts well enough *and* fast enough to reach
     // the tolerance within the remaining budget at the observed rate.
     const double rate = trial / current;
     const int remaining = options.budget - it - 1;
-    need_refactor = rate > options.reuse_contraction ||
-                    (trial > tol && !fresh && trial * std::pow(rate, remaining) > tol);
+    need_exact = rate > options.reuse_contraction ||
+                 (trial > tol && !exact && trial * std::pow(rate, remaining) > tol) || (krylov && !own_lu);
     x.swap(x_try);
     r.swap(r_try);
     ++result.accepted_iterates;
     current = trial;
-    fresh = false;
+    fresh = jacobian_at_x = false;
     result.norms.push_back(current);
     if (current <= tol) {
       result.converged = true;

@@ -28,6 +28,13 @@ struct NewtonOptions {
   double rel_tol = 1e-8;
   double abs_tol = 1e-10;
   double reuse_contraction = 0.2;
+  /// > 0: where a new Jacobian is needed, solve it by GMRES preconditioned with the
+  /// factorization held, up to this many iterations, and refactorize only if that fails
+  /// (solve/gmres.hpp). 0: refactorize.
+  int krylov_max_iterations = 0;
+  /// The tightest GMRES tolerance (relative to the weighted residual it starts from);
+  /// each iteration asks only for what reaches Newton's tolerance, up to 1e-2.
+  double krylov_rel_tol = 1e-6;
 };
 
 struct NewtonResult {
@@ -38,6 +45,8 @@ struct NewtonResult {
   /// Iterates the line search accepted (0: x is still the start, nothing was solved).
   int accepted_iterates = 0;
   int factorizations = 0;
+  int jacobians = 0;          ///< Jacobian assemblies (for a factorization or for GMRES)
+  int krylov_iterations = 0;  ///< GMRES iterations (one solve with the factorization each)
   std::vector<double> norms;  ///< scaled residual norm before each iteration and at the end
   /// The final residual over the step's first one, both measured with the row scale of the
   /// last factorization (norms.back() / norms.front() may mix two scales).
@@ -66,6 +75,16 @@ class NewtonSolver {
   double norm(const Eigen::VectorXd& r) const;
   bool refactorize(const core::FsiSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd& r,
                    NewtonResult& result);
+  void assemble_jacobian(const core::FsiSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd& r,
+                         NewtonResult& result);
+  /// The norm's row scale from the Jacobian last assembled.
+  void scale_rows_by_jacobian();
+  /// Factorizes the Jacobian last assembled (at x).
+  bool factorize_assembled(const Eigen::VectorXd& x, NewtonResult& result);
+  /// The Newton direction for the Jacobian last assembled, by GMRES on the held
+  /// factorization to rel_tol; returns the GMRES iterations, -1 if it did not converge.
+  int krylov_direction(const Eigen::VectorXd& r, double rel_tol, const NewtonOptions& options,
+                       NewtonResult& result, Eigen::VectorXd& dx);
 
   SparseMatrix jacobian_;
   std::unique_ptr<SparseLU> lu_ = std::make_unique<SparseLU>();
