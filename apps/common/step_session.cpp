@@ -28,6 +28,7 @@ constexpr const char* kCommands[] = {
     "save FILE",
     "load FILE",
     "remesh SCENARIO.json   (go on on that scenario's mesh: everything else must be the same)",
+    "rereference   (u measured from the ball moved and turned with the body: its rigid motion leaves u)",
     "scenario FILE.json   (writes the scenario in use: its numerics as set, its mesh as remeshed)",
     "help",
     "quit"};
@@ -156,6 +157,15 @@ std::optional<nlohmann::ordered_json> StepSession::handle(const std::string& lin
       auto j = ok();
       j["file"] = w[1];
       j["nodes"] = engine_.view().nodes.size();
+      return j;
+    }
+    if (c == "rereference") {
+      want_args(w, 0, 0, "rereference");
+      auto j = ok();
+      j["angle_rad"] = engine_.rereference();
+      const State& s = engine_.state();
+      j["reference_offset_m"] = {s.reference_offset_x_m, s.reference_offset_y_m};
+      j["reference_rotation_rad"] = s.reference_rotation_rad;
       return j;
     }
     if (c == "scenario") {

@@ -15,6 +15,7 @@
 ///   save FILE / load FILE     checkpoints (fsi::save_checkpoint / load_checkpoint)
 ///   remesh SCENARIO.json      the run goes on on that file's mesh (Engine::remesh_from);
 ///                             the rest of the file is ignored, the run's scenario kept
+///   rereference               u measured from the ball moved with the body (Engine::rereference)
 ///   scenario FILE.json        writes the scenario in use (numerics as set, mesh as remeshed)
 ///   help                      the command list
 ///   quit                      ends the session

@@ -3,6 +3,7 @@
 #include <fsi/engine.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 
@@ -55,6 +56,52 @@ TEST(Determinism, RestoredStateContinuesBitIdenticallyWithGmres) {
   fsi::Scenario s = fsi::testing::coarse_example1();
   s.numerics.krylov_iterations = 40;
   expect_restored_state_continues_bit_identically(s);
+}
+
+TEST(Determinism, RestoredStateContinuesBitIdenticallyAfterReReferencing) {
+  // The reference is part of the state and of the checkpoint (format 6); the factorization
+  // origin keeps the reference of its own step.
+  const fsi::Scenario s = fsi::testing::coarse_example1();
+  fsi::Engine straight(s), first(s);
+  for (fsi::Engine* e : {&straight, &first}) {
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(e->step().converged);
+    e->rereference();
+  }
+  const std::filesystem::path file = std::filesystem::path(FSI_BINARY_DIR) / "rereferenced.ckpt";
+  fsi::save_checkpoint(first, file);
+  fsi::Engine resumed(s);
+  fsi::load_checkpoint(resumed, file);
+  EXPECT_EQ(resumed.state().reference_offset_y_m, first.state().reference_offset_y_m);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(straight.step().converged);
+    ASSERT_TRUE(resumed.step().converged);
+  }
+  const Eigen::VectorXd& a = straight.state().solution;
+  const Eigen::VectorXd& b = resumed.state().solution;
+  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), sizeof(double) * a.size())) << "max diff " << (a - b).cwiseAbs().maxCoeff();
+}
+
+TEST(Determinism, ReReferencingDoesNotChangeTheMotion) {
+  const fsi::Scenario s = fsi::testing::coarse_example1();
+  fsi::Engine plain(s), moved(s);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(plain.step().converged);
+    ASSERT_TRUE(moved.step().converged);
+  }
+  const fsi::Functionals before = moved.state().functionals;
+  moved.rereference();
+  // The falling ball's reference went down with it; the interface did not move.
+  EXPECT_LT(moved.state().reference_offset_y_m, -1e-5);
+  EXPECT_NEAR(moved.state().reference_offset_y_m, before.centroid_y_m - s.body.center_m.y, 1e-3);
+  EXPECT_EQ(moved.state().corner_sign, plain.state().corner_sign);
+  EXPECT_NEAR(moved.state().functionals.bottom_y_m, before.bottom_y_m, 1e-12);
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(plain.step().converged);
+    ASSERT_TRUE(moved.step().converged);
+  }
+  EXPECT_NEAR(moved.state().functionals.centroid_y_m, plain.state().functionals.centroid_y_m, 1e-8);
+  EXPECT_NEAR(moved.state().functionals.mean_vy_mps, plain.state().functionals.mean_vy_mps, 1e-7);
+  EXPECT_NEAR(moved.state().functionals.mass_error, plain.state().functionals.mass_error, 1e-7);
 }
 
 TEST(Determinism, CheckpointOfAnotherScenarioIsRefused) {

@@ -51,6 +51,9 @@ fsi::State sample_state() {
   s.edge_cut = {-1.0, 0.25, 1.0 / 3.0};
   s.previous_edge_cut = {0.5};
   s.functionals = {1e-3, -0.6, 0.4, -0.4, 0.4, 0.01, -0.2, -0.3, 0.001, 0.5026, 1e-9};
+  s.reference_offset_x_m = 1.75;
+  s.reference_offset_y_m = -0.5;
+  s.reference_rotation_rad = -3.25;
   auto origin = std::make_shared<fsi::FactorizationOrigin>();
   origin->step_start = s;
   origin->iterate = random_vector(rng, 5 * 40);
@@ -90,6 +93,10 @@ TEST(Checkpoint, RoundTripIsBitIdentical) {
   EXPECT_TRUE(same_bits(back.factorization_origin->iterate, s.factorization_origin->iterate));
   EXPECT_TRUE(same_bits(back.factorization_origin->step_start.solution, s.solution));
   EXPECT_EQ(back.factorization_origin->time_step_s, 1e-3);
+  EXPECT_EQ(back.reference_offset_x_m, 1.75);
+  EXPECT_EQ(back.reference_offset_y_m, -0.5);
+  EXPECT_EQ(back.reference_rotation_rad, -3.25);
+  EXPECT_EQ(back.factorization_origin->step_start.reference_rotation_rad, -3.25);
   EXPECT_EQ(std::memcmp(&back.functionals, &s.functionals, sizeof s.functionals), 0);
 
   // Writing again over an existing checkpoint gives the same bytes.
@@ -130,14 +137,30 @@ std::string with_version(std::string bytes, std::uint32_t version) {
 }
 
 /// A checkpoint of `state` (without a factorization origin) in the layout of formats 3
-/// and 4: without time_step_limit_s, the 8 bytes before the origin flag and the checksum.
+/// to 5: before 6 without the body's reference (3 f64 before the 11 functionals), before
+/// 5 also without time_step_limit_s (the 8 bytes before the origin flag and the checksum).
 std::string older_layout(fsi::State state, const std::string& fingerprint, std::uint32_t version) {
   state.factorization_origin.reset();
   const fs::path file = temp_file("older_layout.ckpt");
   fsi::io::write_checkpoint(file, state, fingerprint);
-  const std::string today = fsi::test::read_file(file);
-  const std::size_t limit_at = today.size() - 8 - 4 - 8;
-  return with_version(today.substr(0, limit_at) + today.substr(limit_at + 8), version);
+  std::string bytes = fsi::test::read_file(file);
+  const std::size_t limit_at = bytes.size() - 8 - 4 - 8;
+  if (version < 5) bytes = bytes.substr(0, limit_at) + bytes.substr(limit_at + 8);
+  const std::size_t reference_at = limit_at - 11 * 8 - 3 * 8;
+  bytes = bytes.substr(0, reference_at) + bytes.substr(reference_at + 3 * 8);
+  return with_version(bytes, version);
+}
+
+TEST(Checkpoint, Format5LoadsWithTheScenariosOwnReference) {
+  const fs::path file = temp_file("v5.ckpt");
+  write_bytes(file, older_layout(sample_state(), "aaaaaaaaaaaaaaaa", 5));
+  const fsi::State back = fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa");
+  EXPECT_EQ(back.reference_offset_x_m, 0.0);
+  EXPECT_EQ(back.reference_offset_y_m, 0.0);
+  EXPECT_EQ(back.reference_rotation_rad, 0.0);
+  EXPECT_EQ(back.time_step_limit_s, sample_state().time_step_limit_s);
+  EXPECT_TRUE(same_bits(back.previous_solution, sample_state().previous_solution));
+  EXPECT_EQ(back.functionals.mass_error, sample_state().functionals.mass_error);
 }
 
 TEST(Checkpoint, Formats3And4ContinueWithTheStepLimitAtTheirLastStep) {

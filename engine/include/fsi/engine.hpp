@@ -88,6 +88,12 @@ class Engine {
   /// not bit-identical to the source's (the previous level's interface is approximated
   /// by the current one, see core/engine.cpp).
   void remesh_from(const Engine& source);
+  /// Re-references the body now, whatever numerics.rereference_angle_rad says: u of both
+  /// levels is measured from the initial ball moved and turned with the body (its
+  /// least-squares rigid motion), State::reference_* record that. The interface, stresses
+  /// and velocities stay as they are (core/rereference.hpp). Returns the angle taken out
+  /// [rad] (0 when there is no solid node to fit).
+  double rereference();
   /// Change a numerical parameter between steps (time step, Newton budget, ...).
   /// scenario() reports the new numerics, and checkpoints saved afterwards carry them.
   void set_numerics(const NumericsSpec& numerics);

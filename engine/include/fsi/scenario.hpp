@@ -137,6 +137,15 @@ struct NumericsSpec {
   /// accepted bests of 21 and 1.4e4 and its body blew up two steps later (mass error 4);
   /// in session 19 it had gone on well after a best of 2150, hence no default bound.
   double accept_best_max_residual = 0.0;
+  /// Re-reference the body when its rigid rotation since the last reference exceeds this
+  /// [rad] (ours, session 21; 0 = never, the default): u is then measured from the ball
+  /// turned and moved with the body, which changes no stress, density or interface, but
+  /// keeps u and its harmonic extension into the fluid small. Without it a ball that has
+  /// rolled carries u = (I - Q) x + ..., whose extension must bend to zero normal
+  /// derivative at every wall within the gap: near a wall the IPS level set and Newton's
+  /// start for newly covered nodes go wrong (core/rereference.hpp). Part of the
+  /// discretization (the extension, hence the cut, changes), so in the fingerprint.
+  double rereference_angle_rad = 0.0;
 
   double cip_gamma = 0.05;        ///< gamma of S_aniso (scaled by 1/(rho_f nu_f))
   /// Weight w of the transient term in the CIP scaling gamma h^2 / (rho_f nu_f + w rho_f h^2 / k)

@@ -57,6 +57,15 @@ struct State {
   std::vector<std::int8_t> corner_sign, previous_corner_sign;
   std::vector<double> edge_cut, previous_edge_cut;
 
+  /// The body's reference configuration (ours, session 21): the Initial Point Set measures
+  /// the initial ball's distance d0 from its centre moved by this offset [m], and the
+  /// displacement u of both levels is measured from the ball turned by
+  /// reference_rotation_rad [rad, counter-clockwise] and moved so. Zero unless the engine
+  /// re-references (numerics.rereference_angle_rad): then u is the elastic part of the
+  /// motion, and its harmonic extension into the fluid stays small (core/rereference.hpp).
+  double reference_offset_x_m = 0.0, reference_offset_y_m = 0.0;
+  double reference_rotation_rad = 0.0;
+
   Functionals functionals;
 
   /// Where the LU factorization that Newton currently reuses was computed (the solver

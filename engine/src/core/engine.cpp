@@ -12,6 +12,7 @@
 #include "core/fsi_system.hpp"
 #include "core/functionals.hpp"
 #include "core/initial_guess.hpp"
+#include "core/rereference.hpp"
 #include "core/step_policy.hpp"
 #include "core/time_step_choice.hpp"
 #include "fe/point_locator.hpp"
@@ -58,6 +59,34 @@ struct Engine::Impl {
     return fe::CutOptions{scenario.numerics.cut_snap, scenario.numerics.cut_snap_distance_m};
   }
 
+  /// The initial ball as the state `s` refers its displacement to (core/rereference.hpp).
+  BodySpec reference_body(const State& s) const {
+    BodySpec body = scenario.body;
+    body.center_m.x += s.reference_offset_x_m;
+    body.center_m.y += s.reference_offset_y_m;
+    return body;
+  }
+
+  /// Takes the body's rigid motion out of u when its rotation exceeds
+  /// numerics.rereference_angle_rad (both levels, the same map; the interface does not move).
+  void rereference_if_turned() {
+    const double limit = scenario.numerics.rereference_angle_rad;
+    if (!(limit > 0.0)) return;
+    const core::RigidFit fit = core::fit_rigid_motion(cut_cur, state.solution);
+    if (fit.nodes == 0 || std::abs(fit.angle_rad) < limit) return;
+    rereference(fit);
+  }
+
+  void rereference(const core::RigidFit& fit) {
+    core::rereference_displacement(cut_cur, fit, state.solution);
+    core::rereference_displacement(cut_prev, fit, state.previous_solution);
+    const BodySpec body = reference_body(state);
+    const mesh::Vec2 centre = core::rereferenced_point(fit, {body.center_m.x, body.center_m.y});
+    state.reference_offset_x_m = centre.x() - scenario.body.center_m.x;
+    state.reference_offset_y_m = centre.y() - scenario.body.center_m.y;
+    state.reference_rotation_rad += fit.angle_rad;
+  }
+
   void initialize() {
     const int n = mesh.num_nodes();
     const fe::CutData data0 = fe::cut_data(mesh, [this](const mesh::Vec2& x) {
@@ -99,13 +128,14 @@ struct Engine::Impl {
     const State& s0 = origin->step_start;
     const fe::CutMesh cur = fe::build_cut_mesh(mesh, fe::CutData{s0.corner_sign, s0.edge_cut});
     const fe::CutMesh prev = fe::build_cut_mesh(mesh, fe::CutData{s0.previous_corner_sign, s0.previous_edge_cut});
+    const BodySpec body = reference_body(s0);
     const fe::CutMesh next = fe::build_cut_mesh(
-        mesh, fe::cut_data(mesh, interface::ips_level_set(scenario.body, cur, buckets, s0.solution), cut_options()));
+        mesh, fe::cut_data(mesh, interface::ips_level_set(body, cur, buckets, s0.solution), cut_options()));
     const fe::QuadratureTable quad = fe::build_quadrature(next);
     system.set_geometry(next, quad, origin->time_step_s);
     std::vector<forms::OldValues> old;
     interface::compute_old_values(mesh, buckets, next, quad, {&cur, &s0.solution}, {&prev, &s0.previous_solution},
-                                  scenario.body, scenario.walls, mapping_options(origin->time_step_s), old);
+                                  body, scenario.walls, mapping_options(origin->time_step_s), old);
     system.set_old_values(std::move(old));
     newton.factorize_at(system, origin->iterate);
   }
@@ -128,7 +158,8 @@ struct Engine::Impl {
 
   void after_state_change() {
     quad_cur = fe::build_quadrature(cut_cur);
-    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution), cut_options());
+    const BodySpec body = reference_body(state);
+    data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
     cut_next = fe::build_cut_mesh(mesh, data_next);
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
   }
@@ -160,8 +191,9 @@ struct Engine::Impl {
   /// by the interface's motion in one step. Both solutions are interpolated at this mesh's
   /// node positions (moved nodes included); where the meshes share nodes nothing changes.
   void remesh_from(const Impl& src) {
+    const BodySpec src_body = src.reference_body(src.state);
     const fe::CutData data = fe::cut_data(
-        mesh, interface::ips_level_set(src.scenario.body, src.cut_prev, src.buckets, src.state.previous_solution),
+        mesh, interface::ips_level_set(src_body, src.cut_prev, src.buckets, src.state.previous_solution),
         cut_options());
     const fe::CutMesh cut = fe::build_cut_mesh(mesh, data);
     State s;
@@ -169,6 +201,9 @@ struct Engine::Impl {
     s.step = src.state.step;
     s.time_step_s = src.state.time_step_s;
     s.time_step_limit_s = src.state.time_step_limit_s;
+    s.reference_offset_x_m = src.state.reference_offset_x_m;
+    s.reference_offset_y_m = src.state.reference_offset_y_m;
+    s.reference_rotation_rad = src.state.reference_rotation_rad;
     s.solution = sample(src.cut_cur, src.buckets, src.state.solution, cut.x);
     s.previous_solution = sample(src.cut_prev, src.buckets, src.state.previous_solution, cut.x);
     for (int i = 0; i < mesh.num_nodes(); ++i)
@@ -195,9 +230,10 @@ struct Engine::Impl {
     t0 = std::chrono::steady_clock::now();
     const interface::MappingOptions mo = mapping_options(k);
     std::vector<forms::OldValues> old;
+    const BodySpec body = reference_body(state);
     const interface::MappingStats ms = interface::compute_old_values(
         mesh, buckets, cut_next, quad, {&cut_cur, &state.solution}, {&cut_prev, &state.previous_solution},
-        scenario.body, scenario.walls, mo, old);
+        body, scenario.walls, mo, old);
     system.set_old_values(std::move(old));
     report.mapping_seconds += seconds_since(t0);
     last_ips_failures = ms.ips_failures;  // reported once, for the attempt that counts
@@ -244,7 +280,9 @@ struct Engine::Impl {
     cut_cur = std::move(cut_next);
     quad_cur = std::move(quad_next);  // the step's quadrature becomes the current one: no copy
     const auto t0 = std::chrono::steady_clock::now();
-    data_next = fe::cut_data(mesh, interface::ips_level_set(scenario.body, cut_cur, buckets, state.solution), cut_options());
+    rereference_if_turned();
+    const BodySpec body = reference_body(state);
+    data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
     cut_next = fe::build_cut_mesh(mesh, data_next);
     report.geometry_seconds += seconds_since(t0);
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
@@ -435,6 +473,15 @@ void Engine::remesh_from(const Engine& source) {
     throw InputError("<remesh>", "", "the new scenario differs from the run's in more than its mesh "
                                      "(body, walls, materials, contact and numerics must be the same)");
   impl_->remesh_from(*source.impl_);
+}
+
+double Engine::rereference() {
+  Impl& e = *impl_;
+  const core::RigidFit fit = core::fit_rigid_motion(e.cut_cur, e.state.solution);
+  if (fit.nodes == 0) return 0.0;
+  e.rereference(fit);
+  e.after_state_change();  // the same cut up to rounding; the functionals of the new u
+  return fit.angle_rad;
 }
 
 FieldView Engine::view() const {

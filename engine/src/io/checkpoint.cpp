@@ -137,9 +137,12 @@ void write_levels(Writer& w, const State& state) {
   w.signs(state.previous_corner_sign);
   w.vector(state.edge_cut);
   w.vector(state.previous_edge_cut);
+  w.f64(state.reference_offset_x_m);
+  w.f64(state.reference_offset_y_m);
+  w.f64(state.reference_rotation_rad);
 }
 
-void read_levels(Reader& r, State& state) {
+void read_levels(Reader& r, State& state, std::uint32_t version) {
   state.time_s = r.f64("time_s");
   state.step = static_cast<long>(r.u64("step"));
   state.time_step_s = r.f64("time_step_s");
@@ -149,6 +152,11 @@ void read_levels(Reader& r, State& state) {
   state.previous_corner_sign = r.signs("previous_corner_sign");
   state.edge_cut = r.doubles("edge_cut");
   state.previous_edge_cut = r.doubles("previous_edge_cut");
+  if (version >= 6) {  // before: never re-referenced
+    state.reference_offset_x_m = r.f64("reference_offset_x_m");
+    state.reference_offset_y_m = r.f64("reference_offset_y_m");
+    state.reference_rotation_rad = r.f64("reference_rotation_rad");
+  }
 }
 
 }  // namespace
@@ -229,13 +237,13 @@ State read_checkpoint(const std::filesystem::path& file, const std::string& expe
   }
 
   State state;
-  read_levels(r, state);
+  read_levels(r, state, version);
   for (double* value : functional_fields(state.functionals)) *value = r.f64("functionals");
   // Before version 5 the step-length controller had no memory: continue at the last step.
   state.time_step_limit_s = version >= 5 ? r.f64("time_step_limit_s") : state.time_step_s;
   if (r.u32("factorization_origin") != 0) {
     auto origin = std::make_shared<FactorizationOrigin>();
-    read_levels(r, origin->step_start);
+    read_levels(r, origin->step_start, version);
     origin->iterate = r.vector("factorization_origin/iterate");
     origin->time_step_s = r.f64("factorization_origin/time_step_s");
     state.factorization_origin = std::move(origin);

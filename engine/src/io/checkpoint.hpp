@@ -9,6 +9,7 @@
 ///   fingerprint u32 length + bytes (fsi::fingerprint of the scenario that wrote it)
 ///   time_s f64, step i64, time_step_s f64
 ///   solution, previous_solution, node_xy, previous_node_xy: each u64 count + count f64
+///   reference_offset_x_m, reference_offset_y_m, reference_rotation_rad f64 (version 6 on)
 ///   functionals: 11 f64 in the order of fsi::Functionals' members
 ///   time_step_limit_s f64 (version 5 on)
 ///   checksum    u64 FNV-1a of every byte before it
@@ -25,8 +26,8 @@ namespace fsi::io {
 /// fingerprint leaves out the end time and covers contact.min_dist_fraction and
 /// numerics.cip_transient_weight; 4: the fingerprint leaves out the solver controls,
 /// io/fingerprint.hpp -- the layout is that of 3; 5: State::time_step_limit_s after the
-/// functionals).
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+/// functionals; 6: the body's reference, State::reference_*, after each level block).
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 /// The oldest version read: a version 3 file is the same layout with the older fingerprint,
 /// 3 and 4 continue with the limit at their last step.
 inline constexpr std::uint32_t kOldestCheckpointVersion = 3;

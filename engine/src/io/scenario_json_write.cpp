@@ -116,7 +116,8 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"time_step_patch_fraction", n.time_step_patch_fraction == defaults.time_step_patch_fraction},
       {"time_step_wall_zone_max_s", n.time_step_wall_zone_max_s == defaults.time_step_wall_zone_max_s},
       {"accept_best_max_residual", n.accept_best_max_residual == defaults.accept_best_max_residual},
-      {"krylov_iterations", n.krylov_iterations == defaults.krylov_iterations}};
+      {"krylov_iterations", n.krylov_iterations == defaults.krylov_iterations},
+      {"rereference_angle_rad", n.rereference_angle_rad == defaults.rereference_angle_rad}};
   for (const auto& [key, is_default] : at_default)
     if (is_default) writer.object["numerics"].erase(key);
   return std::move(writer.object);

@@ -158,6 +158,7 @@ void visit_fields(V& v, S& n) {
   v("cut_snap", n.cut_snap, Real{0.0, 0.25});
   v("cut_snap_distance_m", n.cut_snap_distance_m, Real{0.0, 0.1, false, false, "m (0: off)"});
   v("identity_gap_m", n.identity_gap_m, Real{0.0, 1.0e3, false, false, "m (0: one patch)"});
+  v("rereference_angle_rad", n.rereference_angle_rad, Real{0.0, 3.2, false, false, "rad (0: never)"});
   v("cavitation_pressure_pa", n.cavitation_pressure_pa,
     Real{-1.0e9, 0.0, false, false, "Pa (0: off)"});
 }
