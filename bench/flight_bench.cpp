@@ -12,8 +12,6 @@
 // tell whether the longer steps changed the motion; the bottom and centroid are evaluated
 // on the geometry the last step was solved on, one step (v k) behind. Run it with
 // OPENBLAS_NUM_THREADS=1 on a shared machine and compare ratios.
-#include <sys/resource.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <fsi/engine.hpp>
@@ -21,14 +19,11 @@
 #include <string>
 #include <vector>
 
+#include "cpu_seconds.hpp"
+
 namespace {
 
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-  return seconds(u.ru_utime) + seconds(u.ru_stime);
-}
+using fsi::bench::cpu_seconds;
 
 struct Outcome {
   double k_max_s = 0.0, cpu_s = 0.0;

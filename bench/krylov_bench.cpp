@@ -9,22 +9,17 @@
 // iterations and Newton iterations of the steps alone, their ratio, and how far apart the
 // two end states are (both solve every step to Newton's tolerance). Compare ratios; run
 // with OPENBLAS_NUM_THREADS=1 on a shared machine.
-#include <sys/resource.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fsi/engine.hpp>
 #include <string>
 
+#include "cpu_seconds.hpp"
+
 namespace {
 
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-  return seconds(u.ru_utime) + seconds(u.ru_stime);
-}
+using fsi::bench::cpu_seconds;
 
 struct Run {
   double cpu_s = 0.0;
