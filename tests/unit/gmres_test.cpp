@@ -67,6 +67,28 @@ TEST(Gmres, ReportsNoConvergenceWithinTooFewIterations) {
   EXPECT_LT((b - a * x).norm(), b.norm());
 }
 
+TEST(Gmres, GivesUpEarlyWhenItsRatePredictsNoConvergenceWithinTheBudget) {
+  const int n = 400;
+  const Matrix a = convection_diffusion(n, 0.2, 1.0);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
+  Eigen::VectorXd x;
+  // Unpreconditioned, the 400-point Laplacian gains far less than the 1e-8 that 40
+  // iterations would need at its rate: the caller is better off refactorizing now.
+  const fsi::solve::GmresResult r = fsi::solve::gmres(
+      a, b, [](const Eigen::VectorXd& v) { return v; }, Eigen::VectorXd::Ones(n), 1e-8, 40, x);
+  EXPECT_FALSE(r.converged);
+  EXPECT_TRUE(r.given_up);
+  EXPECT_GE(r.iterations, 10);
+  EXPECT_LT(r.iterations, 20);
+  // With a budget the rate can meet (a good preconditioner), it does not give up.
+  fsi::solve::SparseLU lu;
+  ASSERT_TRUE(lu.factorize(convection_diffusion(n, 0.25, 1.0)));
+  const fsi::solve::GmresResult good = fsi::solve::gmres(
+      a, b, [&](const Eigen::VectorXd& v) { return lu.solve(v); }, Eigen::VectorXd::Ones(n), 1e-8, 40, x);
+  EXPECT_TRUE(good.converged);
+  EXPECT_FALSE(good.given_up);
+}
+
 TEST(Gmres, AZeroRightHandSideIsSolvedByZero) {
   const Matrix a = convection_diffusion(20, 0.0, 1.0);
   Eigen::VectorXd x = Eigen::VectorXd::Ones(20);
