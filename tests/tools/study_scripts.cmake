@@ -51,6 +51,22 @@ if(_rc EQUAL 0 OR NOT _err MATCHES "wall 0 is not AX,AY,BX,BY")
   message(FATAL_ERROR "landings.awk took a bad wall list: exit ${_rc}, ${_err}")
 endif()
 
+# tools/group-contacts.awk: three touches of wall 4 within 0.1 s of each other are one
+# item, a touch of wall 4 0.5 s later and one of wall 6 are their own; nothing stays nothing.
+file(WRITE ${_dir}/contacts.txt "4@11.6472;4@11.6492;4@11.7200;4@12.2;6@12.25\n")
+execute_process(COMMAND ${AWK} -f ${SOURCE_DIR}/tools/group-contacts.awk ${_dir}/contacts.txt
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+set(_want "4@11.6472..11.7200 (3 touch-downs);4@12.2000;6@12.2500\n")
+if(NOT _rc EQUAL 0 OR NOT _out STREQUAL _want)
+  message(FATAL_ERROR "group-contacts.awk: got '${_out}' (exit ${_rc}, ${_err}), want '${_want}'")
+endif()
+file(WRITE ${_dir}/no_contacts.txt "\n")
+execute_process(COMMAND ${AWK} -f ${SOURCE_DIR}/tools/group-contacts.awk ${_dir}/no_contacts.txt
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out)
+if(NOT _rc EQUAL 0 OR NOT _out STREQUAL "\n")
+  message(FATAL_ERROR "group-contacts.awk on no contacts: got '${_out}' (exit ${_rc})")
+endif()
+
 # A stub fsi-movie: records its arguments, writes a run finished at its --end-time (with
 # a checkpoint, so that a later end time continues it).
 set(_stub ${_dir}/fake-fsi-movie)
