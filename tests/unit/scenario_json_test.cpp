@@ -77,7 +77,7 @@ TEST(ScenarioJson, WritesEveryField) {
        {"\"name\"", "\"blocks\"", "\"from_m\"", "\"corners\"", "\"refinements\"", "\"walls\"",
         "\"initial_velocity_mps\"", "\"viscosity_m2ps\"", "\"lambda_pa\"", "\"gravity_mps2\"",
         "\"failure_policy\"", "\"identity_gap_m\"", "\"cip_wall_film_factor\"", "\"cut_snap\"",
-        "\"cut_snap_distance_m\"", "\"cavitation_pressure_pa\"", "\"dist0_m\"", "\"range_max\"", "\"mesh_overlay\"", "\"y_right\""}) {
+        "\"cut_snap_distance_m\"", "\"cavitation_pressure_pa\"", "\"dist0_m\"", "\"corners_as_walls\"", "\"range_max\"", "\"mesh_overlay\"", "\"y_right\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key;
   }
 }
@@ -135,6 +135,9 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   fsi::Scenario k = a;  // the same
   k.numerics.cut_snap_distance_m = 8e-4;
   EXPECT_NE(fsi::fingerprint(k), f);
+  fsi::Scenario l = a;  // contact added later: the same (the default, true, keeps the pin)
+  l.contact.corners_as_walls = false;
+  EXPECT_NE(fsi::fingerprint(l), f);
 }
 
 TEST(ScenarioJson, FingerprintIsPinned) {

@@ -193,6 +193,12 @@ struct ContactSpec {
   /// distance the chapter reports (dist >= 0.18 dist_0), and a contact the force could
   /// not prevent no longer throws the body off with an arbitrarily large impulse.
   double min_dist_fraction = 0.1;
+  /// A wall end point (a tread's edge) within dist_0 of the body pushes like a flat wall
+  /// through it, tangent to the body (ours, since session 24). The chapter's dist to the
+  /// point itself lets a corner push with about a tenth of a flat wall's force at a 2 mm
+  /// gap, too little to keep a ball rolling over the edge off it (docs/solver.md, "Tread
+  /// edges"). false: the chapter's formula literally.
+  bool corners_as_walls = true;
 };
 
 struct OutputSpec {

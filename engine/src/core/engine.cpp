@@ -400,7 +400,9 @@ struct Engine::Impl {
     if (system.max_contact_pressure() > 0.0)
       report.events.push_back({StepEvent::Kind::contact_force_active, state.time_s, {}, -1,
                                "penalty contact active, max pressure " +
-                                   std::to_string(system.max_contact_pressure()) + " Pa"});
+                                   std::to_string(system.max_contact_pressure()) + " Pa, force on the body (" +
+                                   std::to_string(system.contact_force_on_body().x()) + ", " +
+                                   std::to_string(system.contact_force_on_body().y()) + ") N/m"});
     report.message = policy_note;
     if (last_ips_failures > 0)
       report.message += (report.message.empty() ? "" : "; ") + std::to_string(last_ips_failures) +

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/contact_distance.hpp"
 #include "forms/pressure_stabilization.hpp"
 #include "fsi/state.hpp"
 #include "mesh/walls.hpp"
@@ -175,8 +176,22 @@ void FsiSystem::build_contact_forces() {
   const fe::CutMesh& cut = *cut_;
   contact_force_.setZero(pattern_.rows());
   max_contact_pressure_ = 0.0;
+  contact_force_on_body_n_per_m_ = mesh::Vec2::Zero();
   const double gamma_c = scenario_.contact.gamma_c, dist0 = scenario_.contact.dist0_m;
   if (!(gamma_c > 0.0 && dist0 > 0.0)) return;
+  // Tread edges push like a flat wall tangent to the body (contact_distance.hpp).
+  Eigen::Vector2d centroid_m(0.0, 0.0);
+  double solid_area_m2 = 0.0;
+  for (int k = 0; k < cut.num_elements(); ++k) {
+    if (cut.elements[k].phase != Phase::solid) continue;
+    for (int q = quadrature_->first[k]; q < quadrature_->first[k + 1]; ++q) {
+      solid_area_m2 += quadrature_->points[q].weight;
+      centroid_m += quadrature_->points[q].weight * quadrature_->points[q].x;
+    }
+  }
+  if (solid_area_m2 > 0.0) centroid_m /= solid_area_m2;
+  const ContactDistance distance(scenario_.walls, cut.interface, centroid_m, dist0, scenario_.body.radius_m,
+                                 scenario_.contact.corners_as_walls && solid_area_m2 > 0.0);
   const double g = 0.5 / std::sqrt(3.0);
   for (const fe::InterfaceSegment& seg : cut.interface) {
     // Solid side: centroid of the patch's solid sub-elements.
@@ -197,11 +212,12 @@ void FsiSystem::build_contact_forces() {
     if (n.dot(0.5 * (seg.a + seg.b) - centroid) < 0.0) n = -n;
     for (double s : {0.5 - g, 0.5 + g}) {
       const mesh::Vec2 x = seg.a + s * d;
-      const double dist = mesh::distance_to_walls(scenario_.walls, x).distance_m;
+      const double dist = distance(x);
       if (dist >= dist0) continue;
       const double pc = gamma_c * (dist0 - dist) / std::max(dist, scenario_.contact.min_dist_fraction * dist0);
       max_contact_pressure_ = std::max(max_contact_pressure_, pc);
       const double w = 0.5 * len * pc;
+      contact_force_on_body_n_per_m_ -= mesh::Vec2(w * n[0], w * n[1]);
       for (int f = 0; f < 2; ++f) {
         contact_force_[kFieldsPerNode * seg.node[0] + f] += w * (1.0 - s) * n[f];
         contact_force_[kFieldsPerNode * seg.node[1] + f] += w * s * n[f];

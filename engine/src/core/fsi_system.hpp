@@ -45,6 +45,8 @@ class FsiSystem {
 
   /// The largest penalty contact pressure of this step [Pa] (0: inactive).
   double max_contact_pressure() const { return max_contact_pressure_; }
+  /// The penalty force on the body this step, -int_I P_c n_s [N per m of depth].
+  mesh::Vec2 contact_force_on_body() const { return contact_force_on_body_n_per_m_; }
   const forms::FsiCoefficients& coefficients() const { return coefficients_; }
 
  private:
@@ -73,6 +75,7 @@ class FsiSystem {
   std::vector<forms::OpenBoundarySide> open_sides_;
   Eigen::VectorXd contact_force_;                  ///< constant residual part
   double max_contact_pressure_ = 0.0;
+  mesh::Vec2 contact_force_on_body_n_per_m_ = mesh::Vec2::Zero();
 };
 
 }  // namespace fsi::core

@@ -120,6 +120,10 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"rereference_angle_rad", n.rereference_angle_rad == defaults.rereference_angle_rad}};
   for (const auto& [key, is_default] : at_default)
     if (is_default) writer.object["numerics"].erase(key);
+  // Likewise contact.corners_as_walls (session 24) at its default: checkpoints written
+  // before it go on with tread edges that push like walls (docs/solver.md, "Tread edges").
+  if (scenario.contact.corners_as_walls == ContactSpec{}.corners_as_walls)
+    writer.object["contact"].erase("corners_as_walls");
   return std::move(writer.object);
 }
 

@@ -168,6 +168,7 @@ void visit_fields(V& v, S& c) {
   v("gamma_c", c.gamma_c, Real{0.0, 1.0e9, false, false, "N/m (0: no contact force)"});
   v("dist0_m", c.dist0_m, Real{0.0, 1.0e3, false, false, "m"});
   v("min_dist_fraction", c.min_dist_fraction, Real{0.0, 1.0, true, false, "(fraction of dist0_m)"});
+  v("corners_as_walls", c.corners_as_walls, Flag{});
 }
 
 template <class V, Like<OutputSpec> S>
