@@ -219,3 +219,36 @@ TEST(CutMesh, ASnapDistanceLongerThanHalfASideSnapsToTheNearerCorner) {
 }
 
 }  // namespace
+
+TEST(CutMesh, SnappingNeverPutsTheInterfaceOnAWallNode) {
+  // The stairs' fan patches beside a riser: 5.6 cm long sides starting at the tread's
+  // edge, a wall node. A cut 1.9 mm from it (3.4 % of the side) snaps onto a corner with
+  // snap = 5e-2; onto a wall node it would be real contact, so it goes to 5 % of the side.
+  fsi::BlockSpec b;
+  b.x = {fsi::AxisPiece{0.0, 0.112, 2, 0.0, 0.0}};
+  b.y = {fsi::AxisPiece{0.0, 0.016, 2, 0.0, 0.0}};
+  fsi::MeshSpec spec;
+  spec.blocks = {b};
+  const auto open = fsi::mesh::build_patch_mesh(spec, {});
+  const auto walled = fsi::mesh::build_patch_mesh(spec, {fsi::Segment2{{0.0, 0.0}, {0.0, 0.016}}});
+  auto phi = [](const Vec2& x) { return 0.0019 - x.x(); };  // fluid at the wall, solid beyond
+  const fsi::fe::CutOptions options{5e-2, 0.0};
+  const auto free_data = fsi::fe::cut_data(open, phi, options);
+  const auto wall_data = fsi::fe::cut_data(walled, phi, options);
+  int wall_nodes = 0;
+  for (int n = 0; n < walled.num_nodes(); ++n) {
+    if (!walled.is_corner[n] || walled.nodes[n].x() != 0.0) continue;
+    ASSERT_TRUE(walled.on_wall[n]);
+    ++wall_nodes;
+    EXPECT_EQ(free_data.corner_sign[n], 0) << "without the wall the cut snaps onto the corner";
+    EXPECT_EQ(wall_data.corner_sign[n], 1) << "the wall node stays in the fluid";
+  }
+  EXPECT_EQ(wall_nodes, 3);
+  const CutMesh cut = fsi::fe::build_cut_mesh(walled, wall_data);
+  ASSERT_FALSE(cut.interface.empty());
+  for (const auto& seg : cut.interface) {
+    EXPECT_NEAR(seg.a.x(), 0.05 * 0.056, 1e-12) << "5 % of the side from the wall";
+    EXPECT_NEAR(seg.b.x(), 0.05 * 0.056, 1e-12);
+  }
+  EXPECT_NEAR(total_area(cut), 0.112 * 0.016, 1e-15);
+}

@@ -169,8 +169,19 @@ CutData cut_data(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& o
     // The distance rule in the side's parameter: near 1 on a short side, small on a long one.
     const double length = (mesh.nodes[g.b] - mesh.nodes[g.a]).norm();
     const double snap = std::max(options.snap, length > 0.0 ? options.snap_distance_m / length : 0.0);
-    if (t < snap && t <= 1.0 - t) data.corner_sign[g.a] = 0;  // the nearer corner
-    else if (1.0 - t < snap) data.corner_sign[g.b] = 0;
+    // Never onto a wall node: the interface there is real contact, and the no-slip node
+    // holds the body (a cut 1.9 mm beside the stairs' tread edge, on the 6.3 cm sides of
+    // the fan patch, snapped onto the edge and the ball stuck to it; docs/solver.md "Tread
+    // edges"). Such a cut moves to snap x side from the wall node instead: no thinner
+    // sliver than snapping allows, and still off the wall.
+    const double off_wall = std::min(snap, 0.5);
+    if (t < snap && t <= 1.0 - t) {  // the nearer corner
+      if (mesh.on_wall[g.a]) data.edge_cut[e] = off_wall;
+      else data.corner_sign[g.a] = 0;
+    } else if (1.0 - t < snap) {
+      if (mesh.on_wall[g.b]) data.edge_cut[e] = 1.0 - off_wall;
+      else data.corner_sign[g.b] = 0;
+    }
   }
   for (int e = 0; e < n_edges; ++e) {
     const mesh::GridEdge& g = mesh.edges[e];
