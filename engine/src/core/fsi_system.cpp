@@ -180,17 +180,17 @@ void FsiSystem::build_contact_forces() {
   const double gamma_c = scenario_.contact.gamma_c, dist0 = scenario_.contact.dist0_m;
   if (!(gamma_c > 0.0 && dist0 > 0.0)) return;
   // Tread edges push like a flat wall tangent to the body (contact_distance.hpp).
-  Eigen::Vector2d centroid_m(0.0, 0.0);
+  Eigen::Vector2d body_centroid_m(0.0, 0.0);  // the whole solid's (below: one patch's)
   double solid_area_m2 = 0.0;
   for (int k = 0; k < cut.num_elements(); ++k) {
     if (cut.elements[k].phase != Phase::solid) continue;
     for (int q = quadrature_->first[k]; q < quadrature_->first[k + 1]; ++q) {
       solid_area_m2 += quadrature_->points[q].weight;
-      centroid_m += quadrature_->points[q].weight * quadrature_->points[q].x;
+      body_centroid_m += quadrature_->points[q].weight * quadrature_->points[q].x;
     }
   }
-  if (solid_area_m2 > 0.0) centroid_m /= solid_area_m2;
-  const ContactDistance distance(scenario_.walls, cut.interface, centroid_m, dist0, scenario_.body.radius_m,
+  if (solid_area_m2 > 0.0) body_centroid_m /= solid_area_m2;
+  const ContactDistance distance(scenario_.walls, cut.interface, body_centroid_m, dist0, scenario_.body.radius_m,
                                  scenario_.contact.corners_as_walls && solid_area_m2 > 0.0);
   const double g = 0.5 / std::sqrt(3.0);
   for (const fe::InterfaceSegment& seg : cut.interface) {
