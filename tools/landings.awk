@@ -4,12 +4,15 @@
 #   awk -f tools/landings.awk -v walls="AX,AY,BX,BY;..." -v dist0=1e-2 functionals.csv
 #
 # prints one CSV line per landing:
-#   wall,time_s,distance_m,enter_s,leave_s,walls
+#   wall,time_s,distance_m,enter_s,leave_s,walls,rise_m
 # wall: the index into `walls` (the scenario's order) at the closest approach; time_s,
 # distance_m: the closest approach; enter_s, leave_s: when the ball came within dist0 and
 # when it left again (empty: still there in the last row, i.e. resting or rolling at the
 # end); walls: the walls it was over during the landing, in order, joined by '>' (e.g.
-# "1>2": landed at the foot of the plane and rolled onto tread 1).
+# "1>2": landed at the foot of the plane and rolled onto tread 1); rise_m: the rebound, how
+# far the centroid rose above where it was at the closest approach before the next landing
+# began (or the file ended: a run stopped mid-flight gives a lower bound); empty for a
+# landing that lasts to the end.
 #
 # This is the chapter's notion of a "contact" on the stairs (Sect. 12.6.5: "the next contact
 # is on the right part of the first stair"): with the penalty force the ball does not touch,
@@ -49,21 +52,26 @@ NR == 1 {
 {
   t = $col["time_s"] + 0; d = $col["min_distance_m"] + 0
   wall = nearest_wall($col["centroid_x_m"] + 0, $col["centroid_y_m"] + 0)
+  y = $col["centroid_y_m"] + 0
   if (inside && d > leave_factor * dist0) {
-    emit(t)
+    left = sprintf("%.4f", t)
     inside = 0
   }
   if (!inside && d < dist0) {
-    inside = 1; enter = t; closest = d + 1; visited = ""; last_wall = -1
+    if (left != "") emit()
+    inside = 1; enter = t; closest = d + 1; visited = ""; last_wall = -1; left = ""
   }
+  if (y > apex_y) apex_y = y
   if (!inside) next
-  if (d < closest) { closest = d; closest_t = t; landing_wall = wall }
+  if (d < closest) { closest = d; closest_t = t; landing_wall = wall; closest_y = y; apex_y = y }
   if (wall != last_wall) { visited = visited (visited == "" ? "" : ">") wall; last_wall = wall }
 }
-END { if (inside) emit("") }
+END { if (inside || left != "") emit() }
 
-function emit(leave) {
-  printf "%d,%.4f,%.4e,%.4f,%s,%s\n", landing_wall, closest_t, closest, enter, (leave == "" ? "" : sprintf("%.4f", leave)), visited
+# One landing; `left` is empty while the ball is still within reach.
+function emit() {
+  printf "%d,%.4f,%.4e,%.4f,%s,%s,%s\n", landing_wall, closest_t, closest, enter, left, visited,
+         (left == "" ? "" : sprintf("%.4e", apex_y - closest_y))
 }
 
 # Index of the wall segment nearest to (x, y).
