@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <sstream>
 #include <string>
 
 #include "test_scenarios.hpp"
@@ -40,6 +41,24 @@ TEST(FailurePolicy, HalveStepRetriesEveryFailureByDefault) {
   EXPECT_TRUE(r.accepted);
   EXPECT_EQ(halvings(r), 2) << r.message;
   EXPECT_EQ(r.message.find("accept_flagged_reduction"), std::string::npos) << r.message;
+}
+
+TEST(FailurePolicy, TheMessageOfAStepAcceptedAsTheBestGivesThatAttemptsResidual) {
+  // One Newton iteration per attempt: every attempt is [start, end] in residual_norms, and
+  // the step keeps the one that reduced its residual most, not the last.
+  fsi::Engine engine = one_iteration_per_attempt(0.0);
+  const fsi::StepReport r = engine.step();
+  ASSERT_TRUE(r.accepted);
+  ASSERT_EQ(r.residual_norms.size(), 6u) << r.message;
+  std::size_t best = 0;
+  for (std::size_t a = 1; a < 3; ++a)
+    if (r.residual_norms[2 * a + 1] / r.residual_norms[2 * a] <
+        r.residual_norms[2 * best + 1] / r.residual_norms[2 * best])
+      best = a;
+  std::ostringstream expected;
+  expected << "residual " << r.residual_norms[2 * best] << " -> " << r.residual_norms[2 * best + 1];
+  EXPECT_NE(r.message.find(expected.str()), std::string::npos) << "attempt " << best << ": " << r.message;
+  EXPECT_NE(r.message.find("accepted the best of 3 attempt(s)"), std::string::npos) << r.message;
 }
 
 TEST(FailurePolicy, AStepThatStalledFarDownIsAcceptedWithoutHalving) {

@@ -331,7 +331,12 @@ struct Engine::Impl {
     std::string policy_note;  // why an unconverged step was accepted as it is, or rejected
     double best_k = k, best_reduction = std::numeric_limits<double>::infinity();
     double best_final = std::numeric_limits<double>::infinity();  // its last scaled residual
+    double best_first = best_final;                                // its first
     ResidualPeak best_peak;
+    // The residual of the attempt the step keeps, for the message: report.residual_norms
+    // runs through every attempt, so its last entry is the last attempt's, which after
+    // accept_best is not the one accepted.
+    double kept_first = std::numeric_limits<double>::quiet_NaN(), kept_last = kept_first;
     for (int attempt_no = 0;; ++attempt_no) {
       Eigen::VectorXd x;
       const solve::NewtonResult r = attempt(k, quad, x, report);
@@ -342,11 +347,13 @@ struct Engine::Impl {
       if (verdict.candidate && r.relative_residual < best_reduction) {
         best_reduction = r.relative_residual;
         best_final = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.back();
+        best_first = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.front();
         best_x = x;
         best_k = k;
         best_peak = report.largest_residual;
       }
       if (verdict.action == core::AttemptAction::accept) {
+        if (!r.norms.empty()) kept_first = r.norms.front(), kept_last = r.norms.back();
         accept(std::move(x), k, std::move(quad), report);
         report.accepted = true;
         state.time_step_limit_s = core::next_time_step_limit(
@@ -378,6 +385,10 @@ struct Engine::Impl {
         break;
       }
       if (verdict.action == core::AttemptAction::accept_best) {
+        std::ostringstream why;
+        why << "accepted the best of " << attempt_no + 1 << " attempt(s), k = " << best_k << " s";
+        policy_note = why.str();
+        kept_first = best_first, kept_last = best_final;
         k = best_k;
         report.largest_residual = best_peak;
         accept(std::move(best_x), k, std::move(quad), report);
@@ -413,7 +424,10 @@ struct Engine::Impl {
     msg << (report.converged ? "converged" : "NOT converged") << " in " << report.newton_iterations
         << " Newton iteration(s), " << report.factorizations << " factorization(s)";
     if (report.krylov_iterations > 0) msg << ", " << report.krylov_iterations << " GMRES iteration(s)";
-    if (!report.residual_norms.empty()) msg << ", residual " << report.residual_norms.front() << " -> " << report.residual_norms.back();
+    if (report.accepted && std::isfinite(kept_first))
+      msg << ", residual " << kept_first << " -> " << kept_last;
+    else if (!report.residual_norms.empty())
+      msg << ", residual " << report.residual_norms.front() << " -> " << report.residual_norms.back();
     if (const ResidualPeak& w = report.largest_residual; !report.converged && w.node >= 0)
       msg << "; largest residual: " << equation_name(w.equation) << " at node " << w.node << " ("
           << w.where_m.x << ", " << w.where_m.y << ") m, " << w.phase;
