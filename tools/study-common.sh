@@ -169,8 +169,12 @@ study_contacts() {
 study_run_finished() {
   [ -f "$1/summary.json" ] && grep -q '"final": *true' "$1/summary.json" &&
     ! grep -q '"interrupted": *true' "$1/summary.json" || return 1
+  # Reached END_TIME as fsi-movie counts it (apps/common/movie_run.cpp): within half a base
+  # step (numerics.time_step_s of the run's scenario.json; halved steps can end just short).
+  local half_step
+  half_step=$(awk -F: '/"time_step_s"/ { gsub(/[^0-9.eE+-]/, "", $2); print 0.5 * $2; exit }' "$1/scenario.json" 2>/dev/null)
   [ -z "${2:-}" ] || ! grep -q '"stop_reason": *""' "$1/summary.json" ||
-    awk -v end="$2" -F: '/"simulated_time_s"/ { gsub(/[^0-9.eE+-]/, "", $2); ok = ($2 + 0 >= end - 1e-6) }
+    awk -v end="$2" -v half="${half_step:-0}" -F: '/"simulated_time_s"/ { gsub(/[^0-9.eE+-]/, "", $2); ok = ($2 + 0 >= end - half - 1e-6) }
                          END { exit !ok }' "$1/summary.json"
 }
 

@@ -68,6 +68,19 @@ if(NOT _rc EQUAL 0 OR NOT _out STREQUAL "\n")
   message(FATAL_ERROR "group-contacts.awk on no contacts: got '${_out}' (exit ${_rc})")
 endif()
 
+# study_run_finished: a run that ended within half a base step of its end time is
+# finished (fsi-movie stops there; halved steps can end just short of it), one that ended
+# further short is not.
+file(MAKE_DIRECTORY ${_dir}/short)
+file(WRITE ${_dir}/short/scenario.json "{\n  \"numerics\": {\n    \"time_step_s\": 0.0005,\n    \"time_step_max_s\": 0.002\n  }\n}\n")
+file(WRITE ${_dir}/short/summary.json "{\n  \"final\": true,\n  \"interrupted\": false,\n  \"stop_reason\": \"\",\n  \"simulated_time_s\": 3.9999375\n}\n")
+execute_process(COMMAND ${BASH} -c
+    "source '${SOURCE_DIR}/tools/study-common.sh' && study_run_finished '${_dir}/short' 4.0 && ! study_run_finished '${_dir}/short' 4.001"
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "study_run_finished and a run 6.25e-5 s short of 4.0 s (k = 5e-4 s): exit ${_rc} ${_out}${_err}")
+endif()
+
 # A stub fsi-movie: records its arguments, writes a run finished at its --end-time (with
 # a checkpoint, so that a later end time continues it).
 set(_stub ${_dir}/fake-fsi-movie)
