@@ -102,6 +102,42 @@ TEST(FsiJacobian, FluidQuadAcrossTheCavitationFloor) {
   check_element(4, fsi::Phase::fluid, c);
 }
 
+// The random nodal velocities give the side's Gauss point an inflow: the backflow term
+// (v.n)_- v is in the derivative check.
+TEST(FsiJacobian, FluidQuadWithBackflowStabilization) {
+  fsi::forms::FsiCoefficients c = test_coefficients();
+  c.backflow_beta = 1.0;
+  check_element(4, fsi::Phase::fluid, c);
+}
+
+// A uniform velocity through the open side (grad v = 0: the do-nothing correction is
+// zero). Outflow: the backflow term adds nothing. Inflow: tested with v it adds
+// beta rho_f / 2 |v.n| |v|^2 times the side's length (the weights of its two points),
+// which is the kinetic energy flux the inflow brings in.
+TEST(FsiBackflow, TheTermTakesOutTheKineticEnergyOfTheInflowOnly) {
+  ElementFixture f(4, fsi::Phase::fluid);
+  fsi::forms::FsiCoefficients plain = test_coefficients(), stabilized = plain;
+  stabilized.backflow_beta = 1.0;
+  auto extra_power = [&](double vx, double vy) {
+    std::array<double, kMaxLocal> x{}, r0{}, r1{};
+    for (int a = 0; a < 4; ++a) {
+      x[5 * a] = vx;
+      x[5 * a + 1] = vy;
+    }
+    fsi::forms::element_residual<double>(f.input, plain, x, r0);
+    fsi::forms::element_residual<double>(f.input, stabilized, x, r1);
+    double power = 0.0;
+    for (int a = 0; a < 4; ++a) power += (r1[5 * a] - r0[5 * a]) * vx + (r1[5 * a + 1] - r0[5 * a + 1]) * vy;
+    return power;
+  };
+  const double length = f.side.weight[0] + f.side.weight[1];
+  // n = (0.1, -1): v = (0, -0.3) leaves, v = (0.2, 0.4) enters with v.n = -0.38.
+  EXPECT_EQ(extra_power(0.0, -0.3), 0.0);
+  const double vn = 0.2 * f.side.nx + 0.4 * f.side.ny, v2 = 0.2 * 0.2 + 0.4 * 0.4;
+  const double expected = 0.5 * stabilized.rho_f * (-vn) * v2 * length;
+  EXPECT_NEAR(extra_power(0.2, 0.4), expected, 1e-12 * expected);
+}
+
 // A fluid element at rest with a uniform nodal pressure p: the pressure rows hold
 // -ramp(p_cav - p) / (rho_f nu_f) (xi, 1). Above the floor plus the rounding they are
 // zero, far below it the fluid expands at (p_cav - p) / (rho_f nu_f).

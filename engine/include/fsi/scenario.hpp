@@ -181,6 +181,14 @@ struct NumericsSpec {
   /// sucks the ball back with arbitrarily large tension and the ball never lifts off
   /// (docs/solver.md, "The lift-off"). Range [-1e9, 0].
   double cavitation_pressure_pa = 0.0;
+  /// Backflow stabilization beta (ours; 0 = off, the chapter's plain do-nothing). Where
+  /// fluid enters through an open boundary (v.n < 0) the natural condition becomes
+  /// sigma_red n = beta rho_f / 2 (v.n)_- v (Braack & Mucha's directional do-nothing):
+  /// with beta = 1 it takes out exactly the kinetic energy the inflow carries in, which
+  /// plain do-nothing lets grow without bound (the resting ball's wake fed through the
+  /// top grew e-fold in 0.75 s; docs/solver.md, "The backflow at the open top"). Outflow
+  /// (v.n >= 0) is unchanged. Range [0, 1].
+  double backflow_beta = 0.0;
 };
 
 /// Penalty contact (Sect. 12.5): P_c = gamma_c (dist_0 - dist)/dist for dist < dist_0.

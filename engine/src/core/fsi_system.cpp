@@ -76,6 +76,7 @@ void FsiSystem::set_numerics(const NumericsSpec& numerics) {
   coefficients_.s = numerics.solid_s;
   coefficients_.cavitation_p_pa = numerics.cavitation_pressure_pa;
   coefficients_.cavitation_smoothing_pa = forms::cavitation_smoothing_pa(numerics.cavitation_pressure_pa);
+  coefficients_.backflow_beta = numerics.backflow_beta;
 }
 
 void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,

@@ -99,22 +99,30 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
     }
   }
 
-  // Do-nothing correction on open boundaries: - <rho_f nu_f grad v^T n, phi>.
+  // Do-nothing correction on open boundaries: - <rho_f nu_f grad v^T n, phi>; and where
+  // fluid flows in, the backflow term - <beta rho_f / 2 (v.n)_- v, phi>. Tested with v
+  // it adds beta rho_f / 2 |v.n_-| |v|^2 >= 0, which cancels the kinetic energy the
+  // convective term lets in through the boundary (it is rho_f / 2 (v.n) |v|^2 there).
   if (!solid)
     for (int s = 0; s < in.num_open_sides; ++s) {
       const OpenBoundarySide& side = in.open_sides[s];
       for (int q = 0; q < 2; ++q) {
         const fe::ShapeValues& sv = side.shape[q];
-        S G[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+        S G[2][2] = {{0.0, 0.0}, {0.0, 0.0}}, vb[2] = {0.0, 0.0};
         for (int a = 0; a < n; ++a)
           for (int i = 0; i < 2; ++i) {
             G[i][0] += sv.grad[a].x() * x[5 * a + i];
             G[i][1] += sv.grad[a].y() * x[5 * a + i];
+            vb[i] += sv.value[a] * x[5 * a + i];
           }
         // (grad v^T n)_i = sum_j G[j][i] n_j
-        const S t[2] = {G[0][0] * side.nx + G[1][0] * side.ny, G[0][1] * side.nx + G[1][1] * side.ny};
+        S t[2] = {mu_f * (G[0][0] * side.nx + G[1][0] * side.ny),
+                  mu_f * (G[0][1] * side.nx + G[1][1] * side.ny)};
+        const S vn = vb[0] * side.nx + vb[1] * side.ny;
+        if (c.backflow_beta > 0.0 && value_of(vn) < 0.0)
+          for (int i = 0; i < 2; ++i) t[i] += (0.5 * c.backflow_beta * c.rho_f) * vn * vb[i];
         for (int a = 0; a < n; ++a)
-          for (int i = 0; i < 2; ++i) r[5 * a + i] -= (side.weight[q] * mu_f * sv.value[a]) * t[i];
+          for (int i = 0; i < 2; ++i) r[5 * a + i] -= (side.weight[q] * sv.value[a]) * t[i];
       }
     }
 }

@@ -6,6 +6,7 @@
 /// Fluid sub-element (rho_f, sigma_f = rho_f nu_f (grad v + grad v^T) - p I):
 ///   momentum   (rho_f ((v - v_old∘T)/k + ((v - d_t T) . grad) v), phi) + (sigma_f, grad phi)
 ///              - <rho_f nu_f grad v^T n, phi>_{open boundary}        (do-nothing correction, 12.1)
+///              - <beta rho_f / 2 (v.n)_- v, phi>_{open boundary}    (backflow, 0 by default)
 ///   pressure   (div v - ramp(p_cav - p) / (rho_f nu_f), xi)_F   [+ S_aniso(p, xi), assembled
 ///              separately; the ramp is the optional cavitation floor, 0 by default]
 ///   displacement: harmonic extension (grad u, grad psi)_F on nodes not touching the solid
@@ -41,6 +42,7 @@ struct FsiCoefficients {
   /// Cavitation floor (NumericsSpec::cavitation_pressure_pa): off when cavitation_p_pa == 0.
   double cavitation_p_pa = 0.0;
   double cavitation_smoothing_pa = 0.0;  ///< width of the C^1 rounding of the ramp
+  double backflow_beta = 0.0;  ///< directional do-nothing on inflow (NumericsSpec::backflow_beta)
 };
 
 /// Width of the rounding of the cavitation floor's ramp: a quarter of |p_cav|.

@@ -109,6 +109,7 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"cut_snap", n.cut_snap == defaults.cut_snap},
       {"cut_snap_distance_m", n.cut_snap_distance_m == defaults.cut_snap_distance_m},
       {"cavitation_pressure_pa", n.cavitation_pressure_pa == defaults.cavitation_pressure_pa},
+      {"backflow_beta", n.backflow_beta == defaults.backflow_beta},
       {"accept_flagged_reduction", n.accept_flagged_reduction == defaults.accept_flagged_reduction},
       {"accept_flagged_max_residual", n.accept_flagged_max_residual == defaults.accept_flagged_max_residual},
       {"time_step_max_s", n.time_step_max_s == defaults.time_step_max_s},

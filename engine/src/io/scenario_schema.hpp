@@ -161,6 +161,7 @@ void visit_fields(V& v, S& n) {
   v("rereference_angle_rad", n.rereference_angle_rad, Real{0.0, 3.2, false, false, "rad (0: never)"});
   v("cavitation_pressure_pa", n.cavitation_pressure_pa,
     Real{-1.0e9, 0.0, false, false, "Pa (0: off)"});
+  v("backflow_beta", n.backflow_beta, Real{0.0, 1.0, false, false, "(0: plain do-nothing)"});
 }
 
 template <class V, Like<ContactSpec> S>
