@@ -63,7 +63,7 @@ END {
   if (state == "rebound" && rose && dmax > dmin + 5e-4 && !stopped_early) rebound[++n] = dmax
   # At rest: the rows from the last one at or before t_end - window on are all slower than
   # rest_speed (and they do span the window). Without time or velocity columns: the last row.
-  rest = last
+  rest = last == "" ? "" : sprintf("%.6e", last)
   if (rows > 0) {
     at_rest = 0
     for (i = rows; i >= 1; --i) {
