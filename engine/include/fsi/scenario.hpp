@@ -186,7 +186,7 @@ struct NumericsSpec {
   /// sigma_red n = beta rho_f / 2 (v.n)_- v (Braack & Mucha's directional do-nothing):
   /// with beta = 1 it takes out exactly the kinetic energy the inflow carries in, which
   /// plain do-nothing lets grow without bound (the resting ball's wake fed through the
-  /// top grew e-fold in 0.75 s; docs/solver.md, "The backflow at the open top"). Outflow
+  /// top grew e-fold in about 0.6 s; docs/solver.md, "The backflow at the open top"). Outflow
   /// (v.n >= 0) is unchanged. Range [0, 1].
   double backflow_beta = 0.0;
 };
