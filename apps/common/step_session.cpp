@@ -55,6 +55,7 @@ nlohmann::ordered_json report_json(const StepReport& r) {
   j["time_step_s"] = r.time_step_s;
   j["newton_iterations"] = r.newton_iterations;
   j["factorizations"] = r.factorizations;
+  j["jacobian_assemblies"] = r.jacobian_assemblies;
   j["krylov_iterations"] = r.krylov_iterations;
   j["residual_norms"] = r.residual_norms;
   if (const ResidualPeak& w = r.largest_residual; w.node >= 0) {

@@ -47,6 +47,9 @@ struct StepReport {
   bool accepted = false;          ///< state advanced (false: rolled back)
   int newton_iterations = 0;
   int factorizations = 0;
+  /// Jacobian assemblies: one per factorization, and with GMRES also the new Jacobians it
+  /// solves with an older factorization (assembly_seconds is their time with the residuals').
+  int jacobian_assemblies = 0;
   /// GMRES iterations (numerics.krylov_iterations > 0), one solve with a factorization each.
   int krylov_iterations = 0;
   std::vector<double> residual_norms;  ///< scaled residual before each iteration and at the end

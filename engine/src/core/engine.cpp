@@ -258,6 +258,7 @@ struct Engine::Impl {
     }
     report.newton_iterations += r.iterations;
     report.factorizations += r.factorizations;
+    report.jacobian_assemblies += r.jacobians;
     report.krylov_iterations += r.krylov_iterations;
     report.residual_norms.insert(report.residual_norms.end(), r.norms.begin(), r.norms.end());
     report.assembly_seconds += r.assembly_seconds;
