@@ -256,3 +256,14 @@ study_first_contact_time() {
 study_xmin_args() {
   awk -v e="$1" -v x="$2" 'BEGIN { if (e > x + 0.1) print "--xmin", x }'
 }
+
+# study_plot_window END_TIME FILE COLUMN XMIN MIN_END YLABEL TITLE CURVES...: COLUMN over
+# time from XMIN on into FILE, for a study run past MIN_END (a shorter one would give an
+# empty axis) and with curves; degenerated rows are left out, as in every study plot.
+study_plot_window() {
+  local end_time=$1 file=$2 column=$3 xmin=$4 min_end=$5 ylabel=$6 title=$7; shift 7
+  [ $# -gt 0 ] && awk -v t="$end_time" -v min="$min_end" 'BEGIN { exit !(t > min) }' || return 0
+  build/apps/fsi-plot "$file" --x time_s --y "$column" \
+    --skip-above mass_error="$study_degenerate_mass_error" --xmin "$xmin" \
+    --ylabel "$ylabel" --title "$title" "$@"
+}
