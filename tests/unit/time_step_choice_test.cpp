@@ -134,6 +134,77 @@ TEST(TimeStepChoice, InTheWallZoneLongerStepsOnlyForASlowBodyWhenAllowed) {
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0301, 0.0, 0.0), kWide, 1.0), 8e-3);
 }
 
+TEST(TimeStepChoice, InTheWallZoneABodyAtTheTurnOfAnImpactTakesK) {
+  using fsi::core::SolidMotion;
+  auto n = numerics(8e-3);
+  n.time_step_wall_zone_max_s = 4e-3;
+  // 2 mm up, rows of 4 mm, mean velocity zero. At rest: up to 4e-3 s.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.0, 0.0}), 4e-3);
+  // At the turn of an impact (the stiff ball: nodes at 0.02 m/s, decelerating at 8 m/s^2,
+  // 0.42 m/s within the look-ahead): k.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.02, 8.0}), 1e-3);
+  // Its top still coming down at 0.3 m/s: k.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.3, 0.0}), 1e-3);
+  // Settling: 0.005 m/s, 0.1 m/s^2 (0.01 m/s within the look-ahead; 4e-3 s steps move it
+  // 0.04 mm, within 1/32 of the row): the longer steps stay.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.005, 0.1}), 4e-3);
+  // Outside the zone the mean velocity alone decides (a spinning ball in flight).
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.2, 0.0, 0.0), kWide, 1.0, 0.0, SolidMotion{0.3, 8.0}), 8e-3);
+  // A non-finite motion gives k.
+  EXPECT_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0,
+                             SolidMotion{std::numeric_limits<double>::quiet_NaN(), 0.0}),
+            1e-3);
+}
+
+TEST(TimeStepChoice, SolidMotionFromTheSolidNodesOfBothLevels) {
+  fsi::MeshSpec spec;
+  fsi::BlockSpec b;
+  b.x = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
+  b.y = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
+  spec.blocks = {b};
+  const fsi::mesh::PatchMesh mesh = fsi::mesh::build_patch_mesh(spec, {});
+  const auto below = [&](double y0) {
+    return fsi::fe::build_cut_mesh(mesh,
+                                   fsi::fe::cut_data(mesh, [=](const fsi::mesh::Vec2& x) { return x.y() - y0; }));
+  };
+  // The solid: y < 0.4 now, y < 0.45 a step of 0.01 s before.
+  const fsi::fe::CutMesh cut = below(0.4), previous_cut = below(0.45);
+  const int nodes = static_cast<int>(cut.touches_solid.size());
+  Eigen::VectorXd now = Eigen::VectorXd::Zero(fsi::kFieldsPerNode * nodes), before = now;
+  int inside = -1, interface = -1;
+  for (int i = 0; i < nodes; ++i) {
+    const bool solid = cut.touches_solid[i];
+    now[fsi::kFieldsPerNode * i + fsi::kVx] = solid ? 0.01 : 5.0;  // the fluid fast: not counted
+    before[fsi::kFieldsPerNode * i + fsi::kVx] = solid ? 0.01 : -5.0;
+    const bool inside_at_both =
+        solid && !cut.touches_fluid[i] && previous_cut.touches_solid[i] && !previous_cut.touches_fluid[i];
+    if (inside_at_both && inside < 0) inside = i;
+    if (solid && cut.touches_fluid[i] && interface < 0) interface = i;
+  }
+  ASSERT_GE(inside, 0);
+  ASSERT_GE(interface, 0);
+  auto motion = fsi::core::solid_motion(cut, now, previous_cut, before, 0.01);
+  EXPECT_DOUBLE_EQ(motion.max_speed_mps, 0.01);
+  EXPECT_DOUBLE_EQ(motion.max_acceleration_mps2, 0.0);
+  // One node inside at (0.3, -0.4) m/s, before at rest: 0.5 m/s, 50 m/s^2.
+  now[fsi::kFieldsPerNode * inside + fsi::kVx] = 0.3;
+  now[fsi::kFieldsPerNode * inside + fsi::kVy] = -0.4;
+  before[fsi::kFieldsPerNode * inside + fsi::kVx] = 0.0;
+  motion = fsi::core::solid_motion(cut, now, previous_cut, before, 0.01);
+  EXPECT_DOUBLE_EQ(motion.max_speed_mps, 0.5);
+  EXPECT_DOUBLE_EQ(motion.max_acceleration_mps2, 50.0);
+  // A jump at an interface node counts in the speed, not in the acceleration.
+  now[fsi::kFieldsPerNode * interface + fsi::kVx] = 0.8;
+  motion = fsi::core::solid_motion(cut, now, previous_cut, before, 0.01);
+  EXPECT_DOUBLE_EQ(motion.max_speed_mps, 0.8);
+  EXPECT_DOUBLE_EQ(motion.max_acceleration_mps2, 50.0);
+  // No step before (the first step): no acceleration.
+  EXPECT_EQ(fsi::core::solid_motion(cut, now, previous_cut, before, 0.0).max_acceleration_mps2, 0.0);
+  // No solid: nothing.
+  const fsi::fe::CutMesh none = below(-1.0);
+  EXPECT_EQ(fsi::core::solid_motion(none, now, none, before, 0.01).max_speed_mps, 0.0);
+}
+
 TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
   const auto n = numerics(8e-3);
   const double nan = std::numeric_limits<double>::quiet_NaN();

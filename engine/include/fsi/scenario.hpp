@@ -101,8 +101,10 @@ struct NumericsSpec {
   /// A body in the zone but not in real contact may take steps k 2^j up to this length
   /// (at most time_step_max_s) while at its speed it needs at least four of them to reach
   /// the wall itself and moves by at most a quarter of what time_step_patch_fraction allows
-  /// elsewhere; the step-length controller still bounds it. For a ball at rest on a wall
-  /// (a ball rolling on it at 0.2 m/s still takes k: core/time_step_choice.hpp).
+  /// elsewhere, the speed being the larger of the mean and what its solid nodes reach within
+  /// 0.05 s at their present acceleration (a ball at the turn of an impact takes k); the
+  /// step-length controller still bounds it. For a ball at rest on a wall (a ball rolling on
+  /// it at 0.2 m/s still takes k: core/time_step_choice.hpp).
   double time_step_wall_zone_max_s = 0.0;
   double end_time_s = 5.0;
   int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)

@@ -321,8 +321,10 @@ struct Engine::Impl {
 
   StepReport step() {
     StepReport report;
-    double k = core::choose_time_step(scenario.numerics, state.functionals, core::cut_patch_side(mesh, cut_next),
-                                      state.time_s, state.time_step_limit_s);
+    double k = core::choose_time_step(
+        scenario.numerics, state.functionals, core::cut_patch_side(mesh, cut_next), state.time_s,
+        state.time_step_limit_s,
+        core::solid_motion(cut_cur, state.solution, cut_prev, state.previous_solution, state.time_step_s));
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
     // With halve_step, the attempt that reduced its residual most (relative to its own
     // start, both in one row scale) is kept: when every halving fails too, that one is

@@ -17,8 +17,30 @@ double cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& cut) {
   return side_m;
 }
 
+SolidMotion solid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution, const fe::CutMesh& previous_cut,
+                         const Eigen::VectorXd& previous_solution, double last_step_s) {
+  SolidMotion motion;
+  const auto velocity = [](const Eigen::VectorXd& x, std::size_t node) {
+    return Eigen::Vector2d(x[kFieldsPerNode * node + kVx], x[kFieldsPerNode * node + kVy]);
+  };
+  const std::size_t nodes = std::min(cut.touches_solid.size(), static_cast<std::size_t>(solution.size() / kFieldsPerNode));
+  const bool previous_usable = last_step_s > 0.0 && previous_cut.touches_solid.size() == nodes &&
+                               previous_solution.size() == solution.size();
+  for (std::size_t node = 0; node < nodes; ++node) {
+    if (!cut.touches_solid[node]) continue;
+    const Eigen::Vector2d v = velocity(solution, node);
+    motion.max_speed_mps = std::max(motion.max_speed_mps, v.norm());
+    const bool inside_at_both = !cut.touches_fluid[node] && previous_usable && previous_cut.touches_solid[node] &&
+                                !previous_cut.touches_fluid[node];
+    if (inside_at_both)
+      motion.max_acceleration_mps2 =
+          std::max(motion.max_acceleration_mps2, (v - velocity(previous_solution, node)).norm() / last_step_s);
+  }
+  return motion;
+}
+
 double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_patch_side_m, double time_s,
-                        double history_limit_s) {
+                        double history_limit_s, const SolidMotion& motion) {
   const double k = n.time_step_s;
   if (!(n.time_step_max_s > k)) return k;  // off (0), or no longer step allowed
   const double history_s = history_limit_s > 0.0 ? history_limit_s : n.time_step_max_s;
@@ -28,7 +50,11 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
       f.min_distance_m > 0.0 ? std::min(std::max(k, n.time_step_wall_zone_max_s), longest_s) : k;
   const double gap_m = f.min_distance_m - n.time_step_wall_zone_m;
   const double speed_mps = std::hypot(f.mean_vx_mps, f.mean_vy_mps);
-  if (!std::isfinite(speed_mps) || !std::isfinite(f.min_distance_m)) return k;
+  // In the zone: what the solid's nodes reach soon, not only the mean (see
+  // kWallZoneLookahead_s).
+  const double nodes_soon_mps = motion.max_speed_mps + motion.max_acceleration_mps2 * kWallZoneLookahead_s;
+  if (!std::isfinite(speed_mps) || !std::isfinite(nodes_soon_mps) || !std::isfinite(f.min_distance_m)) return k;
+  const double zone_speed_mps = std::max(speed_mps, nodes_soon_mps);
   // A longer step must not overshoot the end (t accumulates rounding: a little slack).
   const double time_left_s = n.end_time_s - time_s + 1e-6 * k;
   double chosen = k;
@@ -37,8 +63,9 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
     // about to enter): as many to reach the wall itself.
     const bool outside_zone_ok = gap_m > 0.0 && kStepsToWallZone * speed_mps * longer <= gap_m;
     const bool in_zone_ok = longer <= longest_in_zone_s * (1.0 + 1e-12) &&
-                            kStepsToWallZone * speed_mps * longer <= f.min_distance_m &&
-                            speed_mps * longer <= kWallZonePatchFraction * n.time_step_patch_fraction * cut_patch_side_m;
+                            kStepsToWallZone * zone_speed_mps * longer <= f.min_distance_m &&
+                            zone_speed_mps * longer <=
+                                kWallZonePatchFraction * n.time_step_patch_fraction * cut_patch_side_m;
     if (!(outside_zone_ok || in_zone_ok) || longer > time_left_s) break;
     if (speed_mps * longer > n.time_step_patch_fraction * cut_patch_side_m) break;
     chosen = longer;

@@ -20,7 +20,9 @@
 /// or with numerics.time_step_wall_zone_max_s > 0 steps up to that length as long as
 ///   kStepsToWallZone * |v| * k 2^j <= min_distance and
 ///   |v| * k 2^j <= kWallZonePatchFraction * time_step_patch_fraction * h_cut
-/// (a ball resting on a wall, not one rolling on it); in real contact (or without an
+/// (a ball resting on a wall, not one rolling on it), where |v| is here the larger of the
+/// mean speed and what the solid's nodes reach within kWallZoneLookahead_s at their
+/// present speed and acceleration (SolidMotion); in real contact (or without an
 /// interface: min_distance 0) always k. The third keeps the interface
 /// from crossing more of a patch per step than k does in the thin rows: the graded rows
 /// above the treads reach 10 cm up, and there 8e-3 s steps (3.5 mm in 21 mm rows) failed
@@ -47,6 +49,15 @@ inline constexpr double kStepsToWallZone = 4.0;
 /// steps: 69 instead of 500 for 0.5 s, the same motion (docs/solver.md, session 19).
 inline constexpr double kWallZonePatchFraction = 0.25;
 
+/// In the wall zone a body counts as slow only if its solid nodes stay slow for this long
+/// [s] at their present acceleration: at the turn of an impact the mean velocity passes
+/// through zero (the stiff contact-study ball decelerates at about 8 m/s^2), and a rule
+/// on the speed alone took 1e-3 and 2e-3 s steps there, in which the squeeze film drains
+/// faster (its CIP leak grows with k) and the ball's rims were pulled onto the ground
+/// (docs/solver.md, session 28). The turn of an impact lasts some 0.02-0.04 s; a ball at
+/// rest, or settling, accelerates by less than 0.2 m/s^2.
+inline constexpr double kWallZoneLookahead_s = 0.05;
+
 /// A step that converged at its first attempt in at most this many Newton iterations lets
 /// the next one be twice as long. Calm flight takes 4-7 at 8e-3 s (and 3-5 at k); the
 /// rho_f = 100 failure of session 17 was preceded by steps of 8-13 and by unconverged
@@ -57,8 +68,25 @@ inline constexpr int kCalmNewtonIterations = 7;
 /// interface cuts patches with sides down to cut_patch_side_m [m], at most
 /// history_limit_s (State::time_step_limit_s; 0: none, as the tests of the geometric
 /// conditions alone use).
+/// How fast the solid moves and how fast that changes, from the nodes: the wall-zone rule's
+/// look at a body that is slow on average but not at rest.
+struct SolidMotion {
+  double max_speed_mps = 0.0;           ///< the largest |v| at a node of a solid sub-element
+  double max_acceleration_mps2 = 0.0;   ///< the largest |v^m - v^{m-1}| / k at the nodes inside the solid at both levels
+};
+
+/// SolidMotion of `solution` on `cut` against `previous_solution` on `previous_cut`, the
+/// step between them last_step_s [s] long (0: no acceleration). The acceleration only at
+/// nodes that belong to solid sub-elements alone at both levels: at the interface a node
+/// changes its place or its phase between the levels, and its difference is no
+/// acceleration. The Eulerian difference at a fixed node also carries v.grad v, which is
+/// small for the near-rigid motion this is asked about.
+SolidMotion solid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution, const fe::CutMesh& previous_cut,
+                         const Eigen::VectorXd& previous_solution, double last_step_s);
+
+/// `motion` (default: none) for the wall-zone rule; see the file comment.
 double choose_time_step(const NumericsSpec& numerics, const Functionals& functionals, double cut_patch_side_m,
-                        double time_s, double history_limit_s = 0.0);
+                        double time_s, double history_limit_s = 0.0, const SolidMotion& motion = {});
 
 /// How the step just accepted went, for the next step's limit.
 struct StepOutcome {
