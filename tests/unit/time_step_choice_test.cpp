@@ -33,6 +33,16 @@ fsi::Functionals body(double distance_m, double vx_mps, double vy_mps) {
   return f;
 }
 
+/// The unit square in `columns` equal patches across and the rows of `y`.
+fsi::mesh::PatchMesh unit_box(int columns, const fsi::AxisPiece& y) {
+  fsi::MeshSpec spec;
+  fsi::BlockSpec b;
+  b.x = {fsi::AxisPiece{0.0, 1.0, columns, 0.0, 0.0}};
+  b.y = {y};
+  spec.blocks = {b};
+  return fsi::mesh::build_patch_mesh(spec, {});
+}
+
 TEST(TimeStepChoice, OffByDefaultEveryStepIsK) {
   fsi::NumericsSpec n;  // time_step_max_s = 0: the chapter's constant step
   EXPECT_EQ(choose_time_step(n, body(1.0, 0.0, 0.0), kWide, 0.0), n.time_step_s);
@@ -157,12 +167,7 @@ TEST(TimeStepChoice, InTheWallZoneABodyAtTheTurnOfAnImpactTakesK) {
 }
 
 TEST(TimeStepChoice, SolidMotionFromTheSolidNodesOfBothLevels) {
-  fsi::MeshSpec spec;
-  fsi::BlockSpec b;
-  b.x = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
-  b.y = {fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0}};
-  spec.blocks = {b};
-  const fsi::mesh::PatchMesh mesh = fsi::mesh::build_patch_mesh(spec, {});
+  const fsi::mesh::PatchMesh mesh = unit_box(4, fsi::AxisPiece{0.0, 1.0, 4, 0.0, 0.0});
   const auto below = [&](double y0) {
     return fsi::fe::build_cut_mesh(mesh,
                                    fsi::fe::cut_data(mesh, [=](const fsi::mesh::Vec2& x) { return x.y() - y0; }));
@@ -214,12 +219,7 @@ TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
 
 TEST(TimeStepChoice, CutPatchSideIsTheSmallestPatchTheInterfaceCuts) {
   // A box graded in y: rows of 1 cm at y = 0 growing to 10 cm at the top, 10 cm wide.
-  fsi::MeshSpec spec;
-  fsi::BlockSpec b;
-  b.x = {fsi::AxisPiece{0.0, 1.0, 10, 0.0, 0.0}};
-  b.y = {fsi::AxisPiece{0.0, 1.0, 20, 0.01, 0.1}};
-  spec.blocks = {b};
-  const fsi::mesh::PatchMesh mesh = fsi::mesh::build_patch_mesh(spec, {});
+  const fsi::mesh::PatchMesh mesh = unit_box(10, fsi::AxisPiece{0.0, 1.0, 20, 0.01, 0.1});
   double smallest = 1.0, cut_smallest = 1.0;
   const auto circle = [](double cy, double r) {
     return [=](const fsi::mesh::Vec2& x) { return std::hypot(x.x() - 0.5, x.y() - cy) - r; };
