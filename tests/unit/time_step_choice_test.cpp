@@ -151,12 +151,12 @@ TEST(TimeStepChoice, InTheWallZoneABodyAtTheTurnOfAnImpactTakesK) {
   // 2 mm up, rows of 4 mm, mean velocity zero. At rest: up to 4e-3 s.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.0, 0.0}), 4e-3);
   // At the turn of an impact (the stiff ball: nodes at 0.02 m/s, decelerating at 8 m/s^2,
-  // 0.42 m/s within the look-ahead): k.
+  // 0.18 m/s within the look-ahead): k.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.02, 8.0}), 1e-3);
   // Its top still coming down at 0.3 m/s: k.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.3, 0.0}), 1e-3);
-  // Settling: 0.005 m/s, 0.1 m/s^2 (0.01 m/s within the look-ahead; 4e-3 s steps move it
-  // 0.04 mm, within 1/32 of the row): the longer steps stay.
+  // Settling: 0.005 m/s, 0.1 m/s^2 (0.007 m/s within the look-ahead; 4e-3 s steps move it
+  // 0.03 mm, within 1/32 of the row): the longer steps stay.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.005, 0.1}), 4e-3);
   // Outside the zone the mean velocity alone decides (a spinning ball in flight).
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.2, 0.0, 0.0), kWide, 1.0, 0.0, SolidMotion{0.3, 8.0}), 8e-3);

@@ -102,7 +102,7 @@ struct NumericsSpec {
   /// (at most time_step_max_s) while at its speed it needs at least four of them to reach
   /// the wall itself and moves by at most a quarter of what time_step_patch_fraction allows
   /// elsewhere, the speed being the larger of the mean and what its solid nodes reach within
-  /// 0.05 s at their present acceleration (a ball at the turn of an impact takes k); the
+  /// 0.02 s at their present acceleration (a ball at the turn of an impact takes k); the
   /// step-length controller still bounds it. For a ball at rest on a wall (a ball rolling on
   /// it at 0.2 m/s still takes k: core/time_step_choice.hpp).
   double time_step_wall_zone_max_s = 0.0;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/contact_distance.hpp"
+#include "core/initial_guess.hpp"
 #include "forms/pressure_stabilization.hpp"
 #include "fsi/state.hpp"
 #include "mesh/walls.hpp"
@@ -299,6 +300,18 @@ void FsiSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
 void FsiSystem::residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& r,
                                       solve::SparseMatrix& jacobian) const {
   assemble<true>(x, r, &jacobian);
+}
+
+int FsiSystem::inverted_solid_points(const Eigen::VectorXd& x) const {
+  if (cut_ == nullptr || quadrature_ == nullptr) return 0;
+  int inverted = 0;
+  for (int e = 0; e < cut_->num_elements(); ++e) {
+    const fe::SubElement& el = cut_->elements[e];
+    if (el.phase != Phase::solid) continue;
+    for (int q = quadrature_->first[e]; q < quadrature_->first[e + 1]; ++q)
+      inverted += !(deformation_determinant(el, quadrature_->points[q], x) > 0.0);
+  }
+  return inverted;
 }
 
 }  // namespace fsi::core

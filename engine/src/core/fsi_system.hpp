@@ -43,6 +43,13 @@ class FsiSystem {
   void residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& r,
                              solve::SparseMatrix& jacobian) const;
 
+  /// How many solid quadrature points x deforms past inversion, det(I - grad u) <= 0
+  /// (J = 1/det(I - grad u) would be negative or infinite). Newton's line search refuses
+  /// an update that adds any: St. Venant-Kirchhoff has no barrier against inversion, the
+  /// stress in F = (I - grad u)^{-1} grows without bound towards it, and a step that
+  /// stalls with points inverted leaves a body that degenerates (docs/solver.md, session 28).
+  int inverted_solid_points(const Eigen::VectorXd& x) const;
+
   /// The largest penalty contact pressure of this step [Pa] (0: inactive).
   double max_contact_pressure() const { return max_contact_pressure_; }
   /// The penalty force on the body this step, -int_I P_c n_s [N per m of depth].

@@ -8,7 +8,8 @@
 /// factorization is therefore kept across iterations and time steps while it still
 /// contracts the residual by `reuse_contraction` per iteration; when it does not, the
 /// Jacobian is re-assembled at the current iterate and refactorized. A backtracking
-/// line search (up to 3 halvings) guards against overshooting.
+/// line search (up to 3 halvings) guards against overshooting and never accepts an
+/// update that inverts more of the solid (FsiSystem::inverted_solid_points).
 ///
 /// Residual norm: max_i |R_i| / max_j |J_ij| (rows scaled by the Jacobian of the last
 /// factorization): comparable across the velocity, displacement and pressure rows. The
