@@ -7,8 +7,8 @@
 // nodes continued from the solid field), the smallest det(I - grad u) over the solid
 // quadrature points at the start, the largest Jacobian entry and UMFPACK's rcond, then N
 // iterations of plain Newton (a fresh exact Jacobian in every iteration, a line search of
-// up to 12 halvings) with the residual's peak and the smallest det(I - grad u) after each. `--start` picks Newton's start
-// (core/initial_guess.hpp): `repair` (the default) is the engine's first attempt, `solid`
+// up to 12 halvings) with the residual's peak and the smallest det(I - grad u) after
+// each. `--start` picks Newton's start (core/initial_guess.hpp): `repair` (the default) is the engine's first attempt, `solid`
 // its retry, `interpolated` the start before session 15. A diagnostic for stalled steps (docs/solver.md,
 // "Newton's start on newly covered nodes"); it changes nothing.
 #include <cmath>
@@ -87,32 +87,6 @@ void print_row(const char* what, Eigen::Index row, const fe::CutMesh& cut) {
               cut.x[node].x(), cut.x[node].y());
 }
 
-/// The smallest det(I - grad u) over the solid quadrature points of `cut` for coefficients
-/// x, where it is, and at how many points it is <= 0 (an inverted deformation).
-struct DetF {
-  double smallest = 1e300;
-  mesh::Vec2 where = mesh::Vec2::Zero();
-  int non_positive = 0;
-};
-
-DetF smallest_det_f(const fe::CutMesh& cut, const fe::QuadratureTable& quad, const Eigen::VectorXd& x) {
-  DetF d;
-  for (int e = 0; e < cut.num_elements(); ++e) {
-    const fe::SubElement& el = cut.elements[e];
-    if (el.phase != Phase::solid) continue;
-    for (int q = quad.first[e]; q < quad.first[e + 1]; ++q) {
-      const fe::QuadraturePoint& qp = quad.points[q];
-      const double det = core::deformation_determinant(el, qp, x);
-      d.non_positive += det <= 0.0;
-      if (det < d.smallest) {
-        d.smallest = det;
-        d.where = qp.x;
-      }
-    }
-  }
-  return d;
-}
-
 int run(const Options& o) {
   const Scenario scenario = load_scenario(o.scenario);
   const State state = io::read_checkpoint(o.checkpoint, fingerprint(scenario));
@@ -147,7 +121,7 @@ int run(const Options& o) {
               system.size());
   std::printf("start: %d nodes re-interpolated, %d continued from the solid field\n", guess.moved_nodes,
               guess.extrapolated_nodes);
-  const DetF start_det = smallest_det_f(next, quad, x);
+  const core::SolidDeterminant start_det = core::solid_determinant(next, quad, x);
   std::printf("det(I - grad u) at the start: smallest %.4f at (%.5f, %.5f) m; %d solid points <= 0\n",
               start_det.smallest, start_det.where.x(), start_det.where.y(), start_det.non_positive);
 
@@ -200,7 +174,7 @@ int run(const Options& o) {
     x += lambda * dx;
     // Where Newton goes: St. Venant-Kirchhoff has no barrier against inversion, and a
     // stalled step that leaves solid points at det <= 0 is what the solid cannot recover from.
-    const DetF det = smallest_det_f(next, quad, x);
+    const core::SolidDeterminant det = core::solid_determinant(next, quad, x);
     std::printf(", step x %g -> %.4g; det(I - grad u) >= %.3f (%d <= 0)\n", lambda, trial, det.smallest,
                 det.non_positive);
   }

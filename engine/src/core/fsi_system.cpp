@@ -304,14 +304,7 @@ void FsiSystem::residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd&
 
 int FsiSystem::inverted_solid_points(const Eigen::VectorXd& x) const {
   if (cut_ == nullptr || quadrature_ == nullptr) return 0;
-  int inverted = 0;
-  for (int e = 0; e < cut_->num_elements(); ++e) {
-    const fe::SubElement& el = cut_->elements[e];
-    if (el.phase != Phase::solid) continue;
-    for (int q = quadrature_->first[e]; q < quadrature_->first[e + 1]; ++q)
-      inverted += !(deformation_determinant(el, quadrature_->points[q], x) > 0.0);
-  }
-  return inverted;
+  return solid_determinant(*cut_, *quadrature_, x).non_positive;
 }
 
 }  // namespace fsi::core

@@ -81,6 +81,24 @@ double deformation_determinant(const fe::SubElement& e, const fe::ShapeValues& s
   return (1.0 - h[0][0]) * (1.0 - h[1][1]) - h[0][1] * h[1][0];
 }
 
+SolidDeterminant solid_determinant(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
+                                   const Eigen::VectorXd& x) {
+  SolidDeterminant d;
+  for (int e = 0; e < cut.num_elements(); ++e) {
+    const fe::SubElement& el = cut.elements[e];
+    if (el.phase != Phase::solid) continue;
+    for (int q = quadrature.first[e]; q < quadrature.first[e + 1]; ++q) {
+      const double det = deformation_determinant(el, quadrature.points[q], x);
+      d.non_positive += !(det > 0.0);
+      if (det < d.smallest) {
+        d.smallest = det;
+        d.where = quadrature.points[q].x;
+      }
+    }
+  }
+  return d;
+}
+
 Eigen::VectorXd initial_guess(const mesh::PatchMesh& mesh, const fe::PatchBuckets& buckets,
                               const fe::CutMesh& current, const fe::CutMesh& next,
                               const Eigen::VectorXd& solution, InitialGuessStats* stats, StartMode mode) {

@@ -21,6 +21,8 @@
 /// retry from it after a failed attempt broke the real-contact test too (session 15): it
 /// is tools/fsi-newton-probe's `--start solid` until that is understood. Never in
 /// patches cut as before (the last step solved on those sub-elements).
+#include <limits>
+
 #include <Eigen/Core>
 
 #include "fe/point_locator.hpp"
@@ -32,11 +34,19 @@ struct InitialGuessStats {
   int extrapolated_nodes = 0;  ///< continued from the solid field
 };
 
-/// The start x for Newton on `next`, given the solution on `current`. Wall nodes keep
-/// their (zero) velocity.
 /// det(I - grad u) of the solid's deformation at a point of sub-element e with shape
 /// values s, for coefficients x (node-major, kFieldsPerNode per node).
 double deformation_determinant(const fe::SubElement& e, const fe::ShapeValues& s, const Eigen::VectorXd& x);
+
+/// det(I - grad u) over the solid quadrature points of a cut mesh: its smallest value,
+/// where, and at how many points it is <= 0 (the deformation turned inside out).
+struct SolidDeterminant {
+  double smallest = std::numeric_limits<double>::infinity();  ///< infinity without a solid
+  mesh::Vec2 where = mesh::Vec2::Zero();                        ///< [m]
+  int non_positive = 0;
+};
+SolidDeterminant solid_determinant(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
+                                   const Eigen::VectorXd& x);
 
 enum class StartMode {
   interpolated,       ///< re-interpolation only (the start before session 15)
@@ -44,6 +54,8 @@ enum class StartMode {
   solid_field         ///< + the solid field at every node in the body that lay in the fluid
 };
 
+/// The start x for Newton on `next`, given the solution on `current`. Wall nodes keep
+/// their (zero) velocity.
 Eigen::VectorXd initial_guess(const mesh::PatchMesh& mesh, const fe::PatchBuckets& buckets,
                               const fe::CutMesh& current, const fe::CutMesh& next,
                               const Eigen::VectorXd& solution, InitialGuessStats* stats = nullptr,

@@ -66,15 +66,12 @@ inline constexpr double kWallZoneLookahead_s = 0.02;
 /// ones, each followed by another long step.
 inline constexpr int kCalmNewtonIterations = 7;
 
-/// The next step's length [s] for a body with the given functionals at time_s [s] whose
-/// interface cuts patches with sides down to cut_patch_side_m [m], at most
-/// history_limit_s (State::time_step_limit_s; 0: none, as the tests of the geometric
-/// conditions alone use).
 /// How fast the solid moves and how fast that changes, from the nodes: the wall-zone rule's
 /// look at a body that is slow on average but not at rest.
 struct SolidMotion {
-  double max_speed_mps = 0.0;           ///< the largest |v| at a node of a solid sub-element
-  double max_acceleration_mps2 = 0.0;   ///< the largest |v^m - v^{m-1}| / k at the nodes inside the solid at both levels
+  double max_speed_mps = 0.0;  ///< the largest |v| at a node of a solid sub-element
+  /// The largest |v^m - v^{m-1}| / k at the nodes inside the solid at both levels.
+  double max_acceleration_mps2 = 0.0;
 };
 
 /// SolidMotion of `solution` on `cut` against `previous_solution` on `previous_cut`, the
@@ -86,7 +83,11 @@ struct SolidMotion {
 SolidMotion solid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution, const fe::CutMesh& previous_cut,
                          const Eigen::VectorXd& previous_solution, double last_step_s);
 
-/// `motion` (default: none) for the wall-zone rule; see the file comment.
+/// The next step's length [s] for a body with the given functionals at time_s [s] whose
+/// interface cuts patches with sides down to cut_patch_side_m [m], at most
+/// history_limit_s (State::time_step_limit_s; 0: none, as the tests of the geometric
+/// conditions alone use).
+/// `motion` (default: none, the mean velocity alone) for the wall-zone rule.
 double choose_time_step(const NumericsSpec& numerics, const Functionals& functionals, double cut_patch_side_m,
                         double time_s, double history_limit_s = 0.0, const SolidMotion& motion = {});
 
