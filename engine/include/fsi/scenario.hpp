@@ -117,6 +117,10 @@ struct NumericsSpec {
   /// when that does not converge (ours, session 21; 0: refactorize every time). A
   /// factorization of the stairs' 71k unknowns costs about 80 solves with one.
   int krylov_iterations = 0;
+  /// Threads of the element loops (residual and Jacobian assembly); 0: the machine's
+  /// hardware threads, at most 8. A solver control: the results are bit-identical for
+  /// every thread count (patches are assembled in groups that share no node).
+  int assembly_threads = 0;
   FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
   int max_halvings = 3;
   /// halve_step only (ours): an attempt that did not converge but brought its scaled

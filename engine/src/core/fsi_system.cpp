@@ -5,8 +5,10 @@
 
 #include "core/contact_distance.hpp"
 #include "core/initial_guess.hpp"
+#include "core/parallel_chunks.hpp"
 #include "forms/pressure_stabilization.hpp"
 #include "fsi/state.hpp"
+#include "mesh/patch_colouring.hpp"
 #include "mesh/walls.hpp"
 
 namespace fsi::core {
@@ -40,6 +42,7 @@ FsiSystem::FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh)
   c.gy = scenario.gravity_mps2.y;
   set_numerics(numerics_);
 
+  patch_groups_ = mesh::colour_patches(mesh);
   pattern_ = solve::build_pattern(mesh, kFieldsPerNode, patch_coupling(), neighbor_coupling());
   // No-slip walls: v = 0 on their nodes.
   for (int n = 0; n < mesh.num_nodes(); ++n)
@@ -78,6 +81,7 @@ void FsiSystem::set_numerics(const NumericsSpec& numerics) {
   coefficients_.cavitation_p_pa = numerics.cavitation_pressure_pa;
   coefficients_.cavitation_smoothing_pa = forms::cavitation_smoothing_pa(numerics.cavitation_pressure_pa);
   coefficients_.backflow_beta = numerics.backflow_beta;
+  threads_ = resolve_threads(numerics.assembly_threads);
 }
 
 void FsiSystem::set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
@@ -246,42 +250,53 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
     for (std::size_t k = 0; k < cip_position_.size(); ++k)
       if (cip_position_[k] >= 0) values[cip_position_[k]] = cip[k];
   }
-  std::array<Scalar, forms::kMaxLocal> xl, rl;
-  for (int k = 0; k < cut.num_elements(); ++k) {
-    const fe::SubElement& e = cut.elements[k];
-    forms::ElementInput in;
-    in.element = &e;
-    in.qp = quadrature_->points.data() + quadrature_->first[k];
-    in.old = old_.data() + quadrature_->first[k];
-    in.num_qp = quadrature_->first[k + 1] - quadrature_->first[k];
-    in.h_patch_m = mesh_.patches[e.patch].size_m;
-    in.open_sides = open_sides_.data() + open_first_[k];
-    in.num_open_sides = open_first_[k + 1] - open_first_[k];
-    const int nl = kFieldsPerNode * e.vertices;
-    for (int a = 0; a < e.vertices; ++a) {
-      in.u_row_solid[a] = cut.touches_solid[e.node[a]];
-      in.p_row_fluid[a] = cut.touches_fluid[e.node[a]];
-      for (int f = 0; f < kFieldsPerNode; ++f) {
-        const double value = x[kFieldsPerNode * e.node[a] + f];
-        if constexpr (kJacobian) xl[kFieldsPerNode * a + f] = Scalar::variable(value, kFieldsPerNode * a + f);
-        else xl[kFieldsPerNode * a + f] = value;
+  // The element loop, patch group by patch group (no two patches of a group share a node,
+  // so the threads of a group write disjoint rows): every entry receives its terms in the
+  // same order whatever the number of threads.
+  const auto assemble_patches = [&](const std::vector<int>& patches, int begin, int end) {
+    std::array<Scalar, forms::kMaxLocal> xl, rl;
+    double* values = kJacobian ? jacobian->valuePtr() : nullptr;
+    for (int i = begin; i < end; ++i) {
+      const int p = patches[i];
+      for (int k = cut.first_element[p]; k < cut.first_element[p + 1]; ++k) {
+        const fe::SubElement& e = cut.elements[k];
+        forms::ElementInput in;
+        in.element = &e;
+        in.qp = quadrature_->points.data() + quadrature_->first[k];
+        in.old = old_.data() + quadrature_->first[k];
+        in.num_qp = quadrature_->first[k + 1] - quadrature_->first[k];
+        in.h_patch_m = mesh_.patches[e.patch].size_m;
+        in.open_sides = open_sides_.data() + open_first_[k];
+        in.num_open_sides = open_first_[k + 1] - open_first_[k];
+        const int nl = kFieldsPerNode * e.vertices;
+        for (int a = 0; a < e.vertices; ++a) {
+          in.u_row_solid[a] = cut.touches_solid[e.node[a]];
+          in.p_row_fluid[a] = cut.touches_fluid[e.node[a]];
+          for (int f = 0; f < kFieldsPerNode; ++f) {
+            const double value = x[kFieldsPerNode * e.node[a] + f];
+            if constexpr (kJacobian) xl[kFieldsPerNode * a + f] = Scalar::variable(value, kFieldsPerNode * a + f);
+            else xl[kFieldsPerNode * a + f] = value;
+          }
+        }
+        for (int l = nl; l < forms::kMaxLocal; ++l) xl[l] = Scalar(0.0);
+        forms::element_residual<Scalar>(in, coefficients_, xl, rl);
+        for (int l = 0; l < nl; ++l) {
+          const int row = kFieldsPerNode * e.node[l / kFieldsPerNode] + l % kFieldsPerNode;
+          if constexpr (kJacobian) {
+            r[row] += rl[l].v;
+            const int* idx = entry_.data() + entry_first_[k] + l * nl;
+            for (int j = 0; j < nl; ++j)
+              if (idx[j] >= 0) values[idx[j]] += rl[l].d[j];
+          } else {
+            r[row] += rl[l];
+          }
+        }
       }
     }
-    for (int i = nl; i < forms::kMaxLocal; ++i) xl[i] = Scalar(0.0);
-    forms::element_residual<Scalar>(in, coefficients_, xl, rl);
-    for (int i = 0; i < nl; ++i) {
-      const int row = kFieldsPerNode * e.node[i / kFieldsPerNode] + i % kFieldsPerNode;
-      if constexpr (kJacobian) {
-        r[row] += rl[i].v;
-        const int* idx = entry_.data() + entry_first_[k] + i * nl;
-        double* values = jacobian->valuePtr();
-        for (int j = 0; j < nl; ++j)
-          if (idx[j] >= 0) values[idx[j]] += rl[i].d[j];
-      } else {
-        r[row] += rl[i];
-      }
-    }
-  }
+  };
+  for (const std::vector<int>& group : patch_groups_)
+    parallel_chunks(threads_, static_cast<int>(group.size()),
+                    [&](int begin, int end) { assemble_patches(group, begin, end); });
   // Dirichlet rows: x_d - 0 (no-slip walls).
   for (std::size_t i = 0; i < dirichlet_dofs_.size(); ++i) {
     const int d = dirichlet_dofs_[i];

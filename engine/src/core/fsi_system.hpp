@@ -67,6 +67,8 @@ class FsiSystem {
   const mesh::PatchMesh& mesh_;
   forms::FsiCoefficients coefficients_;
   solve::SparseMatrix pattern_;
+  std::vector<std::vector<int>> patch_groups_;  ///< mesh::colour_patches: assembled group by group
+  int threads_ = 1;                              ///< threads of the element loop
   std::vector<int> dirichlet_dofs_;
   std::vector<std::vector<int>> dirichlet_row_entries_;  ///< value indices of each Dirichlet row
 

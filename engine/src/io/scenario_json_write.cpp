@@ -118,6 +118,7 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"time_step_wall_zone_max_s", n.time_step_wall_zone_max_s == defaults.time_step_wall_zone_max_s},
       {"accept_best_max_residual", n.accept_best_max_residual == defaults.accept_best_max_residual},
       {"krylov_iterations", n.krylov_iterations == defaults.krylov_iterations},
+      {"assembly_threads", n.assembly_threads == defaults.assembly_threads},
       {"rereference_angle_rad", n.rereference_angle_rad == defaults.rereference_angle_rad}};
   for (const auto& [key, is_default] : at_default)
     if (is_default) writer.object["numerics"].erase(key);

@@ -143,6 +143,7 @@ void visit_fields(V& v, S& n) {
   v("newton_abs_tol", n.newton_abs_tol, Real{0.0, 1.0});
   v("reuse_contraction", n.reuse_contraction, Real{0.0, 1.0});
   v("krylov_iterations", n.krylov_iterations, Int{0, 1000});
+  v("assembly_threads", n.assembly_threads, Int{0, 64});
   v("failure_policy", n.failure_policy, Choice{kFailurePolicyNames});
   v("max_halvings", n.max_halvings, Int{0, 20});
   v("accept_flagged_reduction", n.accept_flagged_reduction, Real{0.0, 1.0, false, true});
