@@ -55,6 +55,9 @@ struct StepReport {
   std::vector<double> residual_norms;  ///< scaled residual before each iteration and at the end
   double time_step_s = 0.0;
   double time_s = 0.0;            ///< time after the step
+  /// The estimated local error of the step in the body's position [m]
+  /// (numerics.time_error_tolerance_m); negative where none was estimated.
+  double time_error_m = -1.0;
   // Wall-clock seconds spent in each stage of the step.
   double geometry_seconds = 0.0;      ///< cut meshes, level set
   double mapping_seconds = 0.0;       ///< IPS Newton (12.4), T_m, old values

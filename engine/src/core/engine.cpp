@@ -14,6 +14,7 @@
 #include "core/initial_guess.hpp"
 #include "core/rereference.hpp"
 #include "core/step_policy.hpp"
+#include "core/time_error_estimate.hpp"
 #include "core/time_step_choice.hpp"
 #include "fe/point_locator.hpp"
 #include "fsi/error.hpp"
@@ -357,10 +358,17 @@ struct Engine::Impl {
       }
       if (verdict.action == core::AttemptAction::accept) {
         if (!r.norms.empty()) kept_first = r.norms.front(), kept_last = r.norms.back();
+        const double tolerance_m = scenario.numerics.time_error_tolerance_m;
+        if (tolerance_m > 0.0 && state.step >= 1)
+          report.time_error_m = core::displacement_error_estimate(cut_prev, state.previous_solution, cut_cur,
+                                                                  state.solution, cut_next, x, state.time_step_s, k);
         accept(std::move(x), k, std::move(quad), report);
         report.accepted = true;
         state.time_step_limit_s = core::next_time_step_limit(
             {k, attempt_no == 0 && report.converged, r.iterations}, scenario.numerics.time_step_s);
+        if (report.time_error_m >= 0.0)
+          state.time_step_limit_s =
+              std::min(state.time_step_limit_s, core::step_for_error(k, report.time_error_m, tolerance_m));
         if (verdict.flagged_early) {
           std::ostringstream why;
           why << "accepted without halving: residual at " << r.relative_residual

@@ -42,6 +42,12 @@ SolidMotion solid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution
 double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_patch_side_m, double time_s,
                         double history_limit_s, const SolidMotion& motion) {
   const double k = n.time_step_s;
+  // Error control may ask for less than k (an impact): the longest k 2^j, j >= -3, within it.
+  if (n.time_error_tolerance_m > 0.0 && history_limit_s > 0.0 && history_limit_s < k * (1.0 - 1e-12)) {
+    double shorter = 0.5 * k;
+    while (shorter > history_limit_s * (1.0 + 1e-12) && shorter > 0.125 * k * (1.0 + 1e-12)) shorter *= 0.5;
+    return shorter;
+  }
   if (!(n.time_step_max_s > k)) return k;  // off (0), or no longer step allowed
   const double history_s = history_limit_s > 0.0 ? history_limit_s : n.time_step_max_s;
   const double longest_s = std::min(n.time_step_max_s, history_s);

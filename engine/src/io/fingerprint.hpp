@@ -14,11 +14,12 @@ namespace fsi::io {
 /// fingerprint since checkpoint format 4: the same state may go on with other solver
 /// controls. (The failure policy halve_step already varies the step's length; the longer
 /// steps away from the walls, time_step_max_s, do the same.)
-inline constexpr std::array<const char*, 15> kSolverControlKeys{
+inline constexpr std::array<const char*, 16> kSolverControlKeys{
     "newton_budget",   "newton_rel_tol",        "newton_abs_tol",           "reuse_contraction",
     "failure_policy",  "max_halvings",          "accept_flagged_reduction", "accept_flagged_max_residual",
     "time_step_max_s", "time_step_wall_zone_m", "time_step_patch_fraction", "time_step_wall_zone_max_s",
-    "accept_best_max_residual", "krylov_iterations", "assembly_threads"};
+    "accept_best_max_residual", "krylov_iterations", "assembly_threads",
+    "time_error_tolerance_m"};
 
 /// The fingerprint as checkpoint format 3 computed it (solver controls included); a
 /// format 3 checkpoint loads when this matches.

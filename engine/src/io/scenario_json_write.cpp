@@ -116,6 +116,7 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"time_step_wall_zone_m", n.time_step_wall_zone_m == defaults.time_step_wall_zone_m},
       {"time_step_patch_fraction", n.time_step_patch_fraction == defaults.time_step_patch_fraction},
       {"time_step_wall_zone_max_s", n.time_step_wall_zone_max_s == defaults.time_step_wall_zone_max_s},
+      {"time_error_tolerance_m", n.time_error_tolerance_m == defaults.time_error_tolerance_m},
       {"accept_best_max_residual", n.accept_best_max_residual == defaults.accept_best_max_residual},
       {"krylov_iterations", n.krylov_iterations == defaults.krylov_iterations},
       {"assembly_threads", n.assembly_threads == defaults.assembly_threads},

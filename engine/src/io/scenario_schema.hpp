@@ -138,6 +138,7 @@ void visit_fields(V& v, S& n) {
   v("time_step_wall_zone_m", n.time_step_wall_zone_m, Real{0.0, 1.0e3, false, false, "m"});
   v("time_step_patch_fraction", n.time_step_patch_fraction, Real{0.0, 1.0e3, true, false, "(of a patch side)"});
   v("time_step_wall_zone_max_s", n.time_step_wall_zone_max_s, Real{0.0, 1.0, false, false, "s (0: every step in the wall zone time_step_s)"});
+  v("time_error_tolerance_m", n.time_error_tolerance_m, Real{0.0, 1.0, false, false, "m per step (0: no error control)"});
   v("newton_budget", n.newton_budget, Int{1, 100});
   v("newton_rel_tol", n.newton_rel_tol, Real{0.0, 1.0, false, true});
   v("newton_abs_tol", n.newton_abs_tol, Real{0.0, 1.0});
