@@ -1,10 +1,13 @@
 #pragma once
 // Canvas: 2D drawing in *logical pixels* (origin top left, y down) on a RenderContext.
-// The GL framebuffer is `supersample` times larger in each direction and the projection
-// maps logical pixels onto it, so every primitive (lines, text, triangles) is
-// antialiased by the box-filter downsampling in finish() without any per-primitive care.
+// The GL framebuffer is `supersample` times larger in each direction (1 by default) and
+// the projection maps logical pixels onto it with the top row first in memory, so the
+// read-back needs no flip. Edges are antialiased per primitive: lines get a one-pixel
+// alpha fringe, text comes from an antialiased glyph atlas, axis-aligned bars and rules
+// are snapped to whole pixels; supersampling (box filter in finish()) smooths the rest.
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string_view>
 #include <vector>
 
@@ -42,8 +45,14 @@ class Canvas {
   /// Starts a picture of width x height logical px filled with `background`.
   /// \param supersample framebuffer pixels per logical pixel per direction (1..4)
   void begin(int width, int height, int supersample, Rgba background = {255, 255, 255, 255});
-  /// Reads the framebuffer back, flips it to top-first rows and box-filters it down.
-  Image finish();
+  /// Reads the framebuffer back into `out` (resized; its storage is reused when the
+  /// size is unchanged) and box-filters it down when supersampling.
+  void finish(Image& out);
+  Image finish() {
+    Image out;
+    finish(out);
+    return out;
+  }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -69,9 +78,9 @@ class Canvas {
   /// bottom (low) to the top (high): the colour bar.
   void colormap_rect(const Rect& r, Colormap map);
 
-  /// Text in the built-in stroke font. `scale` 1 gives 7 px tall capitals. (x, y) is
-  /// the anchor; h/v say which side of the text it is on (v: start = top of capitals).
-  /// vertical text reads bottom to top (for a y-axis label).
+  /// Text (UTF-8) in DejaVu Sans (font.hpp). `scale` 1 gives 7 px tall capitals. (x, y)
+  /// is the anchor; h/v say which side of the text it is on (v: start = top of
+  /// capitals, end = baseline). vertical text reads bottom to top (a y-axis label).
   void text(std::string_view s, float x, float y, float scale, Rgba colour, Align h = Align::start,
             Align v = Align::start, bool vertical = false);
   /// Width of a string at `scale` [logical px].
@@ -80,13 +89,31 @@ class Canvas {
   static float text_height(float scale) { return 7.0f * scale; }
 
  private:
+  struct ColouredVertex {
+    float x, y;
+    std::uint8_t r, g, b, a;
+  };
   void triangles(const std::vector<Vec2>& vertices, Rgba colour);
+  void coloured_triangles(const std::vector<ColouredVertex>& vertices);
+  /// A rectangle with its edges rounded to whole framebuffer pixels (at least one wide).
+  Rect snapped(const Rect& r) const;
+  /// A bar of `w` logical px centred on the line x = c (vertical) or y = c, snapped.
+  Rect snapped_bar(float c, float from, float to, float w, bool vertical) const;
+  void set_blending(bool on);
   unsigned texture(Colormap map);
+  unsigned glyph_texture(int pixel_size);
 
   RenderContext& context_;
   GlApi gl_;
   int width_ = 0, height_ = 0, supersample_ = 1;
+  bool blending_ = false;
   std::array<unsigned, 2> textures_{};  // one 1D texture per Colormap, made on first use
+  std::map<int, unsigned> glyph_textures_;  // glyph atlas per pixel size, made on first use
+  // Scratch buffers kept between frames: no allocation per frame once they have grown.
+  std::vector<std::uint8_t> framebuffer_;  // supersampled read-back
+  std::vector<Vec2> vertices_;
+  std::vector<ColouredVertex> coloured_;
+  std::vector<float> texcoords_;
 };
 
 }  // namespace fsi::render::detail

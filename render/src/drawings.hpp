@@ -7,7 +7,7 @@
 namespace fsi::render::detail {
 
 /// field_frame.cpp
-Image draw_field_frame(Canvas& canvas, const FieldView& view, const FrameSpec& spec);
+void draw_field_frame(Canvas& canvas, const FieldView& view, const FrameSpec& spec, Image& out);
 /// plot_drawing.cpp
 Image draw_plot(Canvas& canvas, const PlotSpec& spec);
 

@@ -119,7 +119,7 @@ void validate(const FieldView& view) {
   }
 }
 
-Image draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec) {
+void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, Image& out) {
   validate(view);
   const ViewWindow w = spec.window.value_or(default_window(view));
   if (!(w.x1 > w.x0) || !(w.y1 > w.y0)) {
@@ -218,7 +218,7 @@ Image draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec) 
     const float x = std::max((area.x0 + area.x1 - tw) / 2, x_min);
     c.text(title, x, area.y0 - ch, ts, ink, Align::start, Align::end);
   }
-  return c.finish();
+  c.finish(out);
 }
 
 }  // namespace fsi::render::detail

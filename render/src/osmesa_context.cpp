@@ -34,6 +34,9 @@ class OsmesaContext final : public RenderContext {
       throw std::invalid_argument("OSMesa: bad size " + std::to_string(width) + "x" +
                                   std::to_string(height));
     }
+    // Binding again is only needed when the size changed or another context (a second
+    // Renderer in this thread) was made current since: frames of one movie skip it.
+    if (width == width_ && height == height_ && OSMesaGetCurrentContext() == context_) return;
     if (width != width_ || height != height_) {
       buffer_.assign(std::size_t(width) * height * 4, 0);
       width_ = width;

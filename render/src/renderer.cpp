@@ -18,7 +18,13 @@ Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 Image Renderer::render(const FieldView& view, const FrameSpec& spec) {
-  return detail::draw_field_frame(impl_->canvas, view, spec);
+  Image out;
+  render(view, spec, out);
+  return out;
+}
+
+void Renderer::render(const FieldView& view, const FrameSpec& spec, Image& into) {
+  detail::draw_field_frame(impl_->canvas, view, spec, into);
 }
 
 Image Renderer::plot(const PlotSpec& spec) { return detail::draw_plot(impl_->canvas, spec); }

@@ -1,16 +1,30 @@
 #pragma once
 /// \file png.hpp
-/// PNG files through libpng: 8-bit RGBA out, any common PNG in (expanded to RGBA).
+/// PNG files through libpng: 8-bit RGB (opaque images) or RGBA out, any common PNG in
+/// (expanded to RGBA).
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "fsi/image.hpp"
 
 namespace fsi::render {
 
-/// Writes an 8-bit RGBA PNG (top row first, as Image stores it). Creates missing
-/// parent folders. Throws std::runtime_error naming the file when it cannot write.
-/// \param compression_level zlib level 0 (fastest, large) .. 9 (smallest, slow).
-void write_png(const std::filesystem::path& file, const Image& image, int compression_level = 3);
+/// zlib level of write_png/encode_png by default: fast enough to write a 1280x720
+/// frame per movie step (see bench/render_bench.cpp).
+inline constexpr int png_fast_level = 1;
+
+/// Writes an 8-bit PNG (top row first, as Image stores it): RGB when every pixel is
+/// opaque, RGBA otherwise. Creates missing parent folders. Throws std::runtime_error
+/// naming the file when it cannot write.
+/// \param compression_level zlib level 0 (fastest, large) .. 9 (smallest, slow). Levels
+///        up to 2 write rows unfiltered (fast); 3 and above let libpng choose a filter
+///        per row (smaller files, several times slower: for pictures kept in the repo).
+void write_png(const std::filesystem::path& file, const Image& image,
+               int compression_level = png_fast_level);
+
+/// The bytes write_png would write.
+std::vector<std::uint8_t> encode_png(const Image& image, int compression_level = png_fast_level);
 
 /// Reads a PNG of any bit depth / colour type into 8-bit RGBA. Throws
 /// std::runtime_error naming the file when it is missing or not a PNG.
