@@ -41,7 +41,7 @@ fi
 
 # Forbidden references. Each pattern is written so that it does not match itself.
 patterns=(
-  'sessio[n][ _-]?[0-9]'                 # the development log's numbering
+  'sessio[n]s?[ _-]?(<=?|>=?)? ?[0-9]'  # the development log's numbering
   'issu[e] ?#?[0-9]'                      # issue numbers
   '\.\.[/]shared'                          # the specification folder beside the repository
   '(NUMERIC[S]|DESIG[N]|STYL[E])\.md'     # and its notes

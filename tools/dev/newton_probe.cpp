@@ -8,9 +8,9 @@
 // quadrature points at the start, the largest Jacobian entry and UMFPACK's rcond, then N
 // iterations of plain Newton (a fresh exact Jacobian in every iteration, a line search of
 // up to 12 halvings) with the residual's peak and the smallest det(I - grad u) after
-// each. `--start` picks Newton's start (core/initial_guess.hpp): `repair` (the default) is the engine's first attempt, `solid`
-// its retry, `interpolated` the start before session 15. A diagnostic for stalled steps (docs/solver.md,
-// "Newton's start on newly covered nodes"); it changes nothing.
+// each. `--start` picks Newton's start (core/initial_guess.hpp): `repair` (the default) is
+// the engine's first attempt, `solid` its retry, `interpolated` plain re-interpolation. A
+// diagnostic for stalled steps (docs/solver.md, "Diagnostics"); it changes nothing.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

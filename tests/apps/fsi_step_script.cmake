@@ -1,16 +1,16 @@
-# Runs fsi-step on tests/data/fsi_step_session.txt and checks every answer: one JSON line
+# Runs fsi-step on tests/data/fsi_step_script.txt and checks every answer: one JSON line
 # per command (blank and comment lines get none, nothing after quit), "ok" answers with
 # their keys, "error" answers naming what was wrong, the rendered PNGs on disk, and a
 # checkpoint that restores the functionals exactly.
 # Inputs: -DSTEP=<fsi-step> -DSOURCE_DIR=<repo> -DBINARY_DIR=<build>.
-set(_out ${BINARY_DIR}/test_tmp/fsi_step_session)
+set(_out ${BINARY_DIR}/test_tmp/fsi_step_script)
 file(REMOVE_RECURSE ${_out})
 file(MAKE_DIRECTORY ${_out})
-file(READ ${SOURCE_DIR}/tests/data/fsi_step_session.txt _script)
+file(READ ${SOURCE_DIR}/tests/data/fsi_step_script.txt _script)
 string(REPLACE "OUT_DIR" "${_out}" _script "${_script}")
-file(WRITE ${_out}/session.txt "${_script}")
+file(WRITE ${_out}/script.txt "${_script}")
 execute_process(COMMAND ${STEP} ${SOURCE_DIR}/tests/data/tiny_drop.json
-  INPUT_FILE ${_out}/session.txt OUTPUT_VARIABLE _stdout ERROR_VARIABLE _stderr
+  INPUT_FILE ${_out}/script.txt OUTPUT_VARIABLE _stdout ERROR_VARIABLE _stderr
   RESULT_VARIABLE _rc TIMEOUT 60)
 if(NOT _rc EQUAL 0)
   message(FATAL_ERROR "fsi-step exited with ${_rc}: ${_stderr}")
@@ -153,4 +153,4 @@ if(NOT _strict_rc EQUAL 3 OR NOT _strict_count EQUAL 2 OR NOT _strict_out MATCHE
   message(FATAL_ERROR "--exit-on-error should stop after the failed load with exit code 3 "
                       "(got ${_strict_rc}, ${_strict_count} answers):\n${_strict_out}\n${_strict_err}")
 endif()
-message("fsi-step session: ${_answers} answers as expected")
+message("fsi-step script: ${_answers} answers as expected")
