@@ -21,9 +21,9 @@ namespace fsi {
 /// chosen so the end sizes match (q = 1: uniform; q = 2: linearly growing sizes).
 /// `from` may be larger than `to` (a piece graded away from its start leftwards).
 struct AxisPiece {
-  double from_m = 0.0;
-  double to_m = 1.0;
-  int patches = 1;
+  double from_m = 0.0;   ///< coordinate where the piece starts [m]
+  double to_m = 1.0;     ///< coordinate where the piece ends [m]
+  int patches = 1;       ///< number of patches between from_m and to_m
   double first_m = 1.0;  ///< size of the patch at `from` [m] (0: uniform)
   double last_m = 1.0;   ///< size of the patch at `to` [m] (0: uniform)
 };
@@ -35,8 +35,8 @@ struct AxisPiece {
 struct BlockSpec {
   std::vector<AxisPiece> x;  ///< patch lines in the first direction
   std::vector<AxisPiece> y;  ///< patch lines in the second direction
-  bool mapped = false;
-  std::array<Point2, 4> corners{};
+  bool mapped = false;   ///< true: the block is the quadrilateral `corners`, mapped bilinearly
+  std::array<Point2, 4> corners{};  ///< mapped: corners counter-clockwise from lower-left [m]
   /// Mapped blocks only: the patch lines along the right side (s = 1), in unit-square
   /// coordinates like `y` (which then gives those along the left side, s = 0), with the
   /// same number of patches. Each line of patches runs straight from its node on the left
@@ -54,9 +54,9 @@ struct MeshSpec {
 
 /// An elastic body. Only balls for now: the initial signed distance d0 is |x - c| - r.
 struct BodySpec {
-  Point2 center_m{0.0, 0.0};
-  double radius_m = 0.4;
-  Point2 initial_velocity_mps{0.0, 0.0};
+  Point2 center_m{0.0, 0.0};              ///< centre of the ball at t = 0 [m]
+  double radius_m = 0.4;                  ///< radius of the ball [m]
+  Point2 initial_velocity_mps{0.0, 0.0};  ///< velocity of the whole body at t = 0 [m/s]
 };
 
 struct FluidSpec {
@@ -106,7 +106,7 @@ struct NumericsSpec {
   /// step-length controller still bounds it. For a ball at rest on a wall (a ball rolling on
   /// it at 0.2 m/s still takes k: core/time_step_choice.hpp).
   double time_step_wall_zone_max_s = 0.0;
-  double end_time_s = 5.0;
+  double end_time_s = 5.0;  ///< simulated time at which a run (fsi-movie) ends [s]
   int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)
   double newton_rel_tol = 1.0e-8;    ///< stop when |R| <= rel_tol |R_0| ...
   double newton_abs_tol = 1.0e-10;   ///< ... or |R| <= abs_tol (scaled residual)
@@ -121,8 +121,9 @@ struct NumericsSpec {
   /// hardware threads, at most 8. A solver control: the results are bit-identical for
   /// every thread count (patches are assembled in groups that share no node).
   int assembly_threads = 0;
+  /// What to do with a step Newton did not solve within its budget (FailurePolicy).
   FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
-  int max_halvings = 3;
+  int max_halvings = 3;  ///< halve_step: how many times a step may be halved
   /// halve_step only (ours): an attempt that did not converge but brought its scaled
   /// residual down to this fraction of its start or below is accepted and flagged at once,
   /// without the retries at k/2, k/4, ... (0: retry every failure). Where Newton stalls just
@@ -219,17 +220,17 @@ struct OutputSpec {
   /// A frame every frame_every x numerics.time_step_s of simulated time (every n-th step
   /// while every step is time_step_s long).
   int frame_every = 10;
-  int width_px = 1280;
-  int height_px = 720;
-  int fps = 30;
+  int width_px = 1280;   ///< frame width [pixels]
+  int height_px = 720;   ///< frame height [pixels]
+  int fps = 30;          ///< frames per second of the movie
   std::string field = "vy";    ///< vx | vy | vmag | p | umag
-  bool mesh_overlay = false;
+  bool mesh_overlay = false;  ///< draw the cut mesh over the field
   double range_min = 0.0;      ///< fixed colour range (min == max: automatic)
-  double range_max = 0.0;
+  double range_max = 0.0;     ///< upper end of the fixed colour range
 };
 
 struct Scenario {
-  std::string name = "ball_drop";
+  std::string name = "ball_drop";  ///< names the run (and its files)
   std::filesystem::path source = "<defaults>";  ///< file it came from (for messages)
   MeshSpec mesh;
   /// No-slip walls. A domain boundary edge lying on a wall gets v = 0; every other
