@@ -17,7 +17,7 @@
 // Examples:
 //   fsi-step assets/scenarios/ball_drop.json                    # type: step 10, functionals
 //   printf 'step 5\nrender out/t.png field=p\nquit\n' | fsi-step assets/scenarios/ball_drop.json
-//   fsi-step tests/data/tiny_drop.json < tests/data/fsi_step_session.txt
+//   fsi-step tests/data/tiny_drop.json < tests/data/fsi_step_script.txt
 #include <unistd.h>
 
 #include <cstdio>

@@ -12,7 +12,7 @@
 # moving while the ball still approaches). rest_distance is the distance in the last row
 # if the ball is at rest there: |mean_vy_mps| <= rest_speed (1e-4 m/s) in every row of the
 # last rest_window_s (0.25 s, counted from the last row at or before t_end - 0.25 s, so
-# that the rows span the whole window); a ball still settling or sinking (session 26's
+# that the rows span the whole window); a ball still settling or sinking (the contact study's
 # balls sank at 2e-4 to 5e-3 m/s) has none. A value is empty when the run did not get
 # that far (e.g. the ball stuck in real contact). A rebound still rising in the last row counts (the run
 # ended in flight) unless -v stopped_early=1: a run stopped because its body degenerated

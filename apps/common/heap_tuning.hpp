@@ -4,7 +4,7 @@
 /// fresh numeric object each time (125 MB for the stairs). glibc serves blocks that large
 /// with a new mmap and returns them to the kernel on free, so every factorization
 /// page-faults its whole workspace in again: 9-10 % of a stairs step was the kernel's
-/// page-fault handling (perf, session 12). Keeping large blocks in the heap lets the
+/// page-fault handling (perf, on the stairs). Keeping large blocks in the heap lets the
 /// next factorization reuse the same pages (12 % less CPU over six stairs steps, 94 % fewer
 /// page faults, identical results: bench/heap_bench.cpp).
 namespace fsi::app {

@@ -4,7 +4,7 @@
 /// (Frei & Richter) keep the largest interior angle of every sub-triangle bounded on a
 /// square patch; in flat patches (the stairs' 4-8 mm rows, 5.6 cm wide) an interface
 /// crossing at a shallow angle makes triangles with angles near 180 degrees (the stairs'
-/// rho_f = 100 run failed where they reached 175: docs/solver.md). fsi-step's `quality`
+/// rho_f = 100 run failed where they reached 175: docs/solver.md "Diagnostics"). fsi-step's `quality`
 /// command reports this measure.
 #include <fsi/field_view.hpp>
 

@@ -225,7 +225,7 @@ TEST(MovieApp, ContinuesAStoppedRunInItsFolder) {
   EXPECT_EQ(b["min_distance"], a["min_distance"]);
   EXPECT_EQ(b["continued_from_step"], 4);
 
-  // A run written before the cavitation_rate_m2ps column (sessions <= 8) continues too;
+  // A run written before the cavitation_rate_m2ps column (the oldest runs) continues too;
   // its rows come back in today's columns (the rate is 0 in this fall without suction).
   const fs::path older = fresh_dir("older_columns");
   args = {kScenario.string(), older.string(), "--end-time", "0.06", "--checkpoint-every", "4"};

@@ -104,7 +104,7 @@ TEST(FailurePolicy, AStepThatDidNotGetFarEnoughDownIsStillHalved) {
 
 TEST(FailurePolicy, AStepFarDownFromAHugeStartIsStillHalved) {
   // Far enough down relatively (0.5), but its final residual is above the absolute bound:
-  // halved as a failed step (session 16, real contact at a corner).
+  // halved as a failed step (real contact at a corner).
   fsi::Engine engine = one_iteration_per_attempt(0.5, 1e-30);
   const fsi::StepReport r = engine.step();
   EXPECT_FALSE(r.converged);

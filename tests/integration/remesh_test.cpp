@@ -1,5 +1,5 @@
 // Engine::remesh_from: a run goes on on another mesh of the same domain (the stairs runs
-// moved onto the fan-block mesh in session 20 this way). Onto the same mesh nothing
+// moved onto the fan-block mesh this way). Onto the same mesh nothing
 // changes; onto another one the body stays where it was and the run goes on converging.
 #include <fsi/engine.hpp>
 #include <fsi/error.hpp>

@@ -24,7 +24,7 @@ set(_head "time_s,min_distance_m,mean_vy_mps,mass_error\n")
 # the last row at or before t_end - 0.25 s is t = 8, |v_y| <= 1e-4 m/s from there on).
 file(WRITE ${_dir}/bounce.csv "${_head}0,0.1,-0.3,0\n1,0.001,-0.1,0\n2,0.02,0.2,0\n3,0.05,0,0\n4,0.02,-0.2,0\n5,0.001,-0.1,0\n6,0.01,0.1,0\n7,0.004,-0.1,0\n8,0.002,0,0\n8.1,0.002,5e-5,0\n8.3,0.002,-2e-6,0\n")
 expect_bounce(bounce.csv "5.000000e-02,1.000000e-02,2.000000e-03")
-# The same ball sinking slowly at the end (session 26: -2e-4 m/s and faster): no rest distance;
+# The same ball sinking slowly at the end (-2e-4 m/s and faster): no rest distance;
 # nor when the slow rows do not span the window (the ball stopped only 0.1 s before the end).
 file(WRITE ${_dir}/sinking.csv "${_head}0,0.1,-0.3,0\n1,0.001,-0.1,0\n2,0.02,0.2,0\n3,0.05,0,0\n4,0.003,-0.2,0\n5,0.0029,-2e-4,0\n5.3,0.0028,-3e-4,0\n")
 expect_bounce(sinking.csv "5.000000e-02,,")
@@ -158,7 +158,7 @@ endif()
 
 # tools/study-stairs: the cases' own solver control (accept_flagged_reduction) comes after
 # the study's default halve_step, and a run recorded with other solver controls (rho_f =
-# 1000 ran with accept_and_flag before session 12) goes on with the new ones, is not
+# 1000 once ran with accept_and_flag) goes on with the new ones, is not
 # refused and stays in the summary: solver controls do not change the problem.
 file(MAKE_DIRECTORY ${_dir}/stairs/rho1000)
 file(WRITE ${_dir}/stairs/rho1000/study-settings.txt "/numerics/failure_policy=accept_and_flag\n")

@@ -70,7 +70,7 @@ TEST(FunctionalsCsv, HeaderNamesEveryColumn) {
   EXPECT_EQ(cells(fsi::io::functionals_csv_header(true)).size(), 16u);
 }
 
-// Runs written before the cavitation column (sessions <= 8) must still continue: their
+// Runs written before the cavitation column (the oldest runs) must still continue: their
 // header is accepted and their rows read with the rate 0, and written back in today's columns.
 TEST(FunctionalsCsv, FilesWithoutTheCavitationColumnReadBack) {
   const std::string old_header =

@@ -1,4 +1,4 @@
-// Newton's start on the new mesh (core/initial_guess.hpp). The rule of session 15: where
+// Newton's start on the new mesh (core/initial_guess.hpp). The rule: where
 // the interpolated start deforms a solid sub-element beyond any physical state, its nodes
 // that lay in the fluid take v and u from the solid field, not from the fluid's
 // extension (near a thin solid sub-element that had made det(I - grad u) <= 0).

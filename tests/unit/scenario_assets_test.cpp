@@ -54,7 +54,7 @@ TEST(ScenarioAssets, BallDropIsExample1) {
   EXPECT_EQ(nodes(s), 4225);
   EXPECT_EQ(s.numerics.time_step_s, 2e-3);
   EXPECT_EQ(s.numerics.end_time_s, 5.0);
-  // The chapter's Example 1 plus our cavitation floor (docs/solver.md, "The lift-off").
+  // The chapter's Example 1 plus our cavitation floor (docs/method.md, "Cavitation floor").
   fsi::Scenario chapter = fsi::example1_scenario();
   EXPECT_EQ(chapter.numerics.cavitation_pressure_pa, 0.0);  // off by default: the chapter
   chapter.numerics.cavitation_pressure_pa = -1.0e4;
@@ -79,7 +79,7 @@ TEST(ScenarioAssets, MaterialStudy) {
     EXPECT_DOUBLE_EQ(s.solid.lambda_pa, 4.0 * s.solid.mu_pa);
     EXPECT_EQ(s.contact.gamma_c, 0.0);
     // Quarter steps near the ground with a floor three times deeper than Example 1's
-    // (docs/solver.md, "The material study at k = 5e-4 s near the ground").
+    // (docs/validation.md, "Material study").
     EXPECT_EQ(s.numerics.time_step_s, 5e-4);
     EXPECT_EQ(s.numerics.time_step_max_s, 2e-3);
     EXPECT_EQ(s.numerics.cavitation_pressure_pa, -3e4);
@@ -94,10 +94,10 @@ TEST(ScenarioAssets, ContactStudy) {
       EXPECT_EQ(s.contact.gamma_c, std::stod(gamma));
       EXPECT_EQ(s.solid.mu_pa, 3.2e6);
       EXPECT_EQ(s.solid.lambda_pa, 1.28e7);
-      EXPECT_EQ(s.numerics.time_step_s, 5e-4);  // quarter steps near the ground (session 25)
+      EXPECT_EQ(s.numerics.time_step_s, 5e-4);  // quarter steps near the ground (docs/validation.md)
       EXPECT_EQ(s.numerics.time_step_max_s, 2e-3);
       // Example 1's floor at the quarter step: the stiff ball hardly flattens and lifts off
-      // with it (the material study's softer balls need -3e4 Pa, docs/solver.md).
+      // with it (the material study's softer balls need -3e4 Pa, docs/validation.md).
       EXPECT_EQ(s.numerics.cavitation_pressure_pa, -1e4);
     }
   }

@@ -144,7 +144,7 @@ TEST(ScenarioJson, FingerprintIsPinned) {
   // Changing this value invalidates every checkpoint written so far: bump the checkpoint
   // format version with it.
   EXPECT_EQ(fsi::fingerprint(fsi::example1_scenario()), "655e059f0ab3abd4");
-  // Format 3's, which the checkpoints written until session 10 carry.
+  // Format 3's, which the oldest checkpoints carry.
   EXPECT_EQ(fsi::io::fingerprint_v3(fsi::example1_scenario()), "039e20b201cdf25e");
 }
 

@@ -1,7 +1,7 @@
 // Newton never turns the solid inside out (solve/newton.cpp, FsiSystem::
 // inverted_solid_points): St. Venant-Kirchhoff has no barrier against inversion, and an
 // update that inverts solid points may still lower the residual; from there Newton
-// stalls on a singular Jacobian (the material study's soft balls, session 28).
+// stalls on a singular Jacobian (the material study's soft balls).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -67,7 +67,7 @@ TEST(SolidInversion, NewtonNeverAcceptsAnIterateThatInvertsMoreOfTheSolid) {
   // Starts whose full Newton steps invert 52-378 solid points (homogeneous compressions
   // and shears of the coarse ball; measured while writing this test). Here the residual
   // of those steps is larger too; in the soft ball's lift-off it was smaller (1.2e4 ->
-  // 6.2e3 with 38 points inverted: docs/solver.md, session 28), which only the count
+  // 6.2e3 with 38 points inverted: docs/method.md, "Inversion guard"), which only the count
   // catches. Whatever Newton does within its budget, it ends with none inverted.
   HomogeneousBall ball;
   for (const auto& a : std::vector<std::array<double, 4>>{

@@ -87,8 +87,8 @@ double flattest_patch_in_open_fluid(const fsi::Scenario& s, double from_walls_m)
 TEST(StairsGeometry, ThinRowsEndBesideTheRisers) {
   // A tread's 4 mm rows fan out to coarse rows within the fan block beside the riser
   // below it (BlockSpec::y_right): the flattest patches are in the fans, flatter the
-  // closer to the riser's top corner (6 at 0.15 m from it, 3.4 at 0.3 m). Until session
-  // 20 the rows went on over the lower treads as 4 mm x 6 cm patches (ratio 15) at any
+  // closer to the riser's top corner (6 at 0.15 m from it, 3.4 at 0.3 m). Without the fans
+  // the rows go on over the lower treads as 4 mm x 6 cm patches (ratio 15) at any
   // distance from the walls, where each ball going down a step stalled Newton.
   for (const char* file : {"stairs_rho1000.json", "../../../tests/data/stairs_coarse.json"}) {
     SCOPED_TRACE(file);

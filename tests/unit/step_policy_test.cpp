@@ -1,5 +1,5 @@
 // The failure policy as a pure function (core/step_policy.hpp): which Newton attempt a
-// step accepts, retries or rejects. The rule added in session 15: an attempt whose
+// step accepts, retries or rejects. The rule for an attempt whose
 // Newton never moved its iterate is never accepted, whatever the policy.
 #include "core/step_policy.hpp"
 
@@ -70,7 +70,7 @@ TEST(StepPolicy, AcceptFlaggedReductionAcceptsAtOnceOnlyAttemptsThatGotFarEnough
   EXPECT_TRUE(v.flagged_early);
   EXPECT_EQ(judge_attempt(n, attempt(false, 7, 5e-3), true, 0, false).action, AttemptAction::retry_halved);
   // Far down from a huge start but nowhere near a solution (step 288 of the corner probe,
-  // session 16: 74 -> 8.2e-4): halved, not accepted.
+  // a corner contact: 74 -> 8.2e-4): halved, not accepted.
   EXPECT_EQ(n.accept_flagged_max_residual, 1e-4);
   v = judge_attempt(n, attempt(false, 17, 1.1e-5, 8.2e-4), true, 0, false);
   EXPECT_EQ(v.action, AttemptAction::retry_halved);

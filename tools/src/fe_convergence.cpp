@@ -1,4 +1,4 @@
-// fsi-fe-convergence: validation studies of the locally modified FE core (issue 3).
+// fsi-fe-convergence: validation studies of the locally modified FE core.
 //
 //   1. interface Poisson problem (coefficient jump 1:10 across a circle): L2 and H1
 //      errors on 65^2, 129^2, 257^2 nodes, uniform and anisotropically graded meshes;

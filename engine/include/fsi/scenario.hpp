@@ -21,9 +21,9 @@ namespace fsi {
 /// chosen so the end sizes match (q = 1: uniform; q = 2: linearly growing sizes).
 /// `from` may be larger than `to` (a piece graded away from its start leftwards).
 struct AxisPiece {
-  double from_m = 0.0;
-  double to_m = 1.0;
-  int patches = 1;
+  double from_m = 0.0;   ///< coordinate where the piece starts [m]
+  double to_m = 1.0;     ///< coordinate where the piece ends [m]
+  int patches = 1;       ///< number of patches between from_m and to_m
   double first_m = 1.0;  ///< size of the patch at `from` [m] (0: uniform)
   double last_m = 1.0;   ///< size of the patch at `to` [m] (0: uniform)
 };
@@ -35,8 +35,8 @@ struct AxisPiece {
 struct BlockSpec {
   std::vector<AxisPiece> x;  ///< patch lines in the first direction
   std::vector<AxisPiece> y;  ///< patch lines in the second direction
-  bool mapped = false;
-  std::array<Point2, 4> corners{};
+  bool mapped = false;   ///< true: the block is the quadrilateral `corners`, mapped bilinearly
+  std::array<Point2, 4> corners{};  ///< mapped: corners counter-clockwise from lower-left [m]
   /// Mapped blocks only: the patch lines along the right side (s = 1), in unit-square
   /// coordinates like `y` (which then gives those along the left side, s = 0), with the
   /// same number of patches. Each line of patches runs straight from its node on the left
@@ -54,9 +54,9 @@ struct MeshSpec {
 
 /// An elastic body. Only balls for now: the initial signed distance d0 is |x - c| - r.
 struct BodySpec {
-  Point2 center_m{0.0, 0.0};
-  double radius_m = 0.4;
-  Point2 initial_velocity_mps{0.0, 0.0};
+  Point2 center_m{0.0, 0.0};              ///< centre of the ball at t = 0 [m]
+  double radius_m = 0.4;                  ///< radius of the ball [m]
+  Point2 initial_velocity_mps{0.0, 0.0};  ///< velocity of the whole body at t = 0 [m/s]
 };
 
 struct FluidSpec {
@@ -112,7 +112,7 @@ struct NumericsSpec {
   /// step just taken), on the ladder time_step_s 2^j, j >= -3, within the other limits
   /// above. A dG(0) step of 2e-3 s in Example 1's fall (0.2 m/s^2) errs by about 4e-7 m.
   double time_error_tolerance_m = 0.0;
-  double end_time_s = 5.0;
+  double end_time_s = 5.0;  ///< simulated time at which a run (fsi-movie) ends [s]
   int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)
   double newton_rel_tol = 1.0e-8;    ///< stop when |R| <= rel_tol |R_0| ...
   double newton_abs_tol = 1.0e-10;   ///< ... or |R| <= abs_tol (scaled residual)
@@ -120,15 +120,16 @@ struct NumericsSpec {
   double reuse_contraction = 0.2;
   /// Where Newton needs the Jacobian at a new iterate: solve it by GMRES preconditioned
   /// with the factorization held, up to this many GMRES iterations, and refactorize only
-  /// when that does not converge (ours, session 21; 0: refactorize every time). A
+  /// when that does not converge (ours; 0: refactorize every time). A
   /// factorization of the stairs' 71k unknowns costs about 80 solves with one.
   int krylov_iterations = 0;
   /// Threads of the element loops (residual and Jacobian assembly); 0: the machine's
   /// hardware threads, at most 8. A solver control: the results are bit-identical for
   /// every thread count (patches are assembled in groups that share no node).
   int assembly_threads = 0;
+  /// What to do with a step Newton did not solve within its budget (FailurePolicy).
   FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
-  int max_halvings = 3;
+  int max_halvings = 3;  ///< halve_step: how many times a step may be halved
   /// halve_step only (ours): an attempt that did not converge but brought its scaled
   /// residual down to this fraction of its start or below is accepted and flagged at once,
   /// without the retries at k/2, k/4, ... (0: retry every failure). Where Newton stalls just
@@ -136,7 +137,7 @@ struct NumericsSpec {
   /// smaller steps stall alike and only multiply the cost; a step that really failed
   /// (a reduction of 0.3, say) is still retried.
   double accept_flagged_reduction = 0.0;
-  /// ... and only if its final scaled residual is at or below this (ours; session 16).
+  /// ... and only if its final scaled residual is at or below this (ours).
   /// A step whose start was far off (real contact at a corner: 74 or 1e7) gets down by 1e-5
   /// of it and still ends at 8e-4 or 6e-2, no solution: accepted, such steps broke the body
   /// within three steps, while halved they converged. Stalls near the tolerance (1e-7 ..
@@ -145,12 +146,12 @@ struct NumericsSpec {
   /// With halve_step (ours; 0 = no bound): the best of a step's attempts is accepted when
   /// every halving failed only if its final scaled residual is at most this; above it the
   /// step is rejected and the state rolled back, so a run stops with a report instead of
-  /// going on from a state that solves nothing. In session 20 the rho_f = 100 stairs run
-  /// accepted bests of 21 and 1.4e4 and its body blew up two steps later (mass error 4);
-  /// in session 19 it had gone on well after a best of 2150, hence no default bound.
+  /// going on from a state that solves nothing. A rho_f = 100 stairs run that accepted
+  /// bests of 21 and 1.4e4 blew its body up two steps later (mass error 4), yet the same
+  /// run had gone on well after a best of 2150, hence no default bound.
   double accept_best_max_residual = 0.0;
   /// Re-reference the body when its rigid rotation since the last reference exceeds this
-  /// [rad] (ours, session 21; 0 = never, the default): u is then measured from the ball
+  /// [rad] (ours; 0 = never, the default): u is then measured from the ball
   /// turned and moved with the body, which changes no stress, density or interface, but
   /// keeps u and its harmonic extension into the fluid small. Without it a ball that has
   /// rolled carries u = (I - Q) x + ..., whose extension must bend to zero normal
@@ -176,7 +177,7 @@ struct NumericsSpec {
   /// A cut closer than cut_snap x (patch side) to a patch corner goes through the corner
   /// (ours). A cut just beside a corner leaves a sub-element a fraction of a millimetre
   /// wide whose nodal values are nearly free, and Newton stalls on it (the stairs' thin
-  /// rows; docs/solver.md). Snapping moves the interface by at most cut_snap x side.
+  /// rows; docs/solver.md, "Cut snapping and thin rows"). Snapping moves the interface by at most cut_snap x side.
   double cut_snap = 1.0e-6;
   /// A cut closer than this distance [m] to a patch corner goes through the corner too
   /// (ours; 0 = off, the default). cut_snap is relative to the side it lies on, which in
@@ -191,14 +192,14 @@ struct NumericsSpec {
   /// div v = max(0, p_cav - p) / (rho_f nu_f) (rounded C^1 over |p_cav|/4), so the
   /// pressure cannot fall far below p_cav. Without it the film under a rebounding ball
   /// sucks the ball back with arbitrarily large tension and the ball never lifts off
-  /// (docs/solver.md, "The lift-off"). Range [-1e9, 0].
+  /// (docs/method.md, "Cavitation floor"). Range [-1e9, 0].
   double cavitation_pressure_pa = 0.0;
   /// Backflow stabilization beta (ours; 0 = off, the chapter's plain do-nothing). Where
   /// fluid enters through an open boundary (v.n < 0) the natural condition becomes
   /// sigma_red n = beta rho_f / 2 (v.n)_- v (Braack & Mucha's directional do-nothing):
   /// with beta = 1 it takes out exactly the kinetic energy the inflow carries in, which
   /// plain do-nothing lets grow without bound (the resting ball's wake fed through the
-  /// top grew e-fold in about 0.6 s; docs/solver.md, "The backflow at the open top"). Outflow
+  /// top grew e-fold in about 0.6 s; docs/method.md, "Backflow stabilization"). Outflow
   /// (v.n >= 0) is unchanged. Range [0, 1].
   double backflow_beta = 0.0;
 };
@@ -214,10 +215,10 @@ struct ContactSpec {
   /// not prevent no longer throws the body off with an arbitrarily large impulse.
   double min_dist_fraction = 0.1;
   /// A wall end point (a tread's edge) within dist_0 of the body pushes like a flat wall
-  /// through it, tangent to the body (ours, since session 24). The chapter's dist to the
+  /// through it, tangent to the body (ours). The chapter's dist to the
   /// point itself lets a corner push with about a tenth of a flat wall's force at a 2 mm
-  /// gap, too little to keep a ball rolling over the edge off it (docs/solver.md, "Tread
-  /// edges"). false: the chapter's formula literally.
+  /// gap, too little to keep a ball rolling over the edge off it (docs/method.md, "Corners
+  /// push like walls"). false: the chapter's formula literally.
   bool corners_as_walls = true;
 };
 
@@ -225,17 +226,17 @@ struct OutputSpec {
   /// A frame every frame_every x numerics.time_step_s of simulated time (every n-th step
   /// while every step is time_step_s long).
   int frame_every = 10;
-  int width_px = 1280;
-  int height_px = 720;
-  int fps = 30;
+  int width_px = 1280;   ///< frame width [pixels]
+  int height_px = 720;   ///< frame height [pixels]
+  int fps = 30;          ///< frames per second of the movie
   std::string field = "vy";    ///< vx | vy | vmag | p | umag
-  bool mesh_overlay = false;
+  bool mesh_overlay = false;  ///< draw the cut mesh over the field
   double range_min = 0.0;      ///< fixed colour range (min == max: automatic)
-  double range_max = 0.0;
+  double range_max = 0.0;     ///< upper end of the fixed colour range
 };
 
 struct Scenario {
-  std::string name = "ball_drop";
+  std::string name = "ball_drop";  ///< names the run (and its files)
   std::filesystem::path source = "<defaults>";  ///< file it came from (for messages)
   MeshSpec mesh;
   /// No-slip walls. A domain boundary edge lying on a wall gets v = 0; every other
@@ -244,7 +245,7 @@ struct Scenario {
   BodySpec body;
   FluidSpec fluid;
   SolidSpec solid;
-  Point2 gravity_mps2{0.0, -0.5};  ///< acts on the solid only (NUMERICS.md 2)
+  Point2 gravity_mps2{0.0, -0.5};  ///< acts on the solid only (docs/method.md, "Gravity")
   NumericsSpec numerics;
   ContactSpec contact;
   OutputSpec output;

@@ -57,7 +57,7 @@ struct State {
   std::vector<std::int8_t> corner_sign, previous_corner_sign;
   std::vector<double> edge_cut, previous_edge_cut;
 
-  /// The body's reference configuration (ours, session 21): the Initial Point Set measures
+  /// The body's reference configuration (ours): the Initial Point Set measures
   /// the initial ball's distance d0 from its centre moved by this offset [m], and the
   /// displacement u of both levels is measured from the ball turned by
   /// reference_rotation_rad [rad, counter-clockwise] and moved so. Zero unless the engine

@@ -10,8 +10,8 @@
 /// shrinks to 2 dist_0, and at a 2 mm gap the corner pushes with a tenth of the flat
 /// wall's force (28 N/m against 3.2 kN/m for gamma_c = 1e4): far less than the weight
 /// of a ball rolling over the edge, which then reaches the corner (real contact), sticks
-/// to it through the no-slip wall node and is torn apart (the stairs runs of session 23,
-/// docs/solver.md "Tread edges").
+/// to it through the no-slip wall node and is torn apart (three of the four stairs runs
+/// at tread 2's edge, docs/method.md "Corners push like walls").
 ///
 /// So here every wall end point the body has come within dist_0 of stands for a flat
 /// wall through it, tangent to the body: the line through the corner perpendicular to

@@ -47,7 +47,8 @@ class FsiSystem {
   /// (J = 1/det(I - grad u) would be negative or infinite). Newton's line search refuses
   /// an update that adds any: St. Venant-Kirchhoff has no barrier against inversion, the
   /// stress in F = (I - grad u)^{-1} grows without bound towards it, and a step that
-  /// stalls with points inverted leaves a body that degenerates (docs/solver.md, session 28).
+  /// stalls with points inverted leaves a body that degenerates (docs/method.md,
+  /// "Inversion guard").
   int inverted_solid_points(const Eigen::VectorXd& x) const;
 
   /// The largest penalty contact pressure of this step [Pa] (0: inactive).

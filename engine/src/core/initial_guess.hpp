@@ -8,8 +8,8 @@
 /// fluid sub-element it carries the fluid's harmonic extension of the displacement, which
 /// near the interface differs from the solid's field by up to millimetres. On a thin solid
 /// sub-element (a 1.8 mm side, the stairs at t = 8.39 s) that is a gradient error of order
-/// one: det(I - grad u) <= 0, Jacobian entries of 1e15, and Newton cannot move at all
-/// (session 15). Such nodes take v and u continued from the solid field of their patch
+/// one: det(I - grad u) <= 0, Jacobian entries of 1e15, and Newton cannot move at all.
+/// Such nodes take v and u continued from the solid field of their patch
 /// (linear for triangles, bilinear for quads: exact for a rigid motion).
 ///
 /// Where: `repair_unphysical` (the engine's start) only at the nodes of solid
@@ -18,7 +18,7 @@
 /// sub-element. Beside tread 1's corner (rho_f = 100, t = 8.151 s) only the latter lets
 /// plain Newton converge (the fluid's values were off by 0.4 mm, physical enough), but as
 /// the engine's start it broke the real-contact test and slowed Example 1's steps, and a
-/// retry from it after a failed attempt broke the real-contact test too (session 15): it
+/// retry from it after a failed attempt broke the real-contact test too: it
 /// is tools/fsi-newton-probe's `--start solid` until that is understood. Never in
 /// patches cut as before (the last step solved on those sub-elements).
 #include <limits>
@@ -49,7 +49,7 @@ SolidDeterminant solid_determinant(const fe::CutMesh& cut, const fe::QuadratureT
                                    const Eigen::VectorXd& x);
 
 enum class StartMode {
-  interpolated,       ///< re-interpolation only (the start before session 15)
+  interpolated,       ///< re-interpolation only (the engine's former start)
   repair_unphysical,  ///< + the solid field where the start is unphysical
   solid_field         ///< + the solid field at every node in the body that lay in the fluid
 };

@@ -1,16 +1,16 @@
 #pragma once
 /// \file rereference.hpp
-/// Taking the body's rigid motion out of the displacement (ours, session 21).
+/// Taking the body's rigid motion out of the displacement (ours).
 ///
 /// The chapter's Eulerian solid carries u with X = x - u(x) the initial point of x, and the
 /// Initial Point Set finds the body as {x : d0(x - u(x)) < 0}. After the ball has rolled by
 /// an angle theta, u = x - Q^T (x - c) - c0 + (elastic part) has the gradient I - Q^T, of
-/// size 2 sin(theta/2), in the solid. Its harmonic extension into the fluid (NUMERICS.md 2,
+/// size 2 sin(theta/2), in the solid. Its harmonic extension into the fluid (docs/method.md,
 /// natural conditions at the walls) must turn that gradient into a zero normal derivative
 /// at each wall within the gap between body and wall: millimetres on the stairs' treads,
 /// centimetres at a riser's corner. There x - u(x) is far from the rigid continuation,
 /// so the level set on the fluid side of the interface, Newton's start for newly covered
-/// nodes (session 15's "repair") and the IPS mapping go wrong; the stairs runs failed
+/// nodes (initial_guess.hpp's "repair") and the IPS mapping go wrong; the stairs runs failed
 /// after about 8 s of rolling, never before.
 ///
 /// Re-referencing replaces the initial configuration by the initial ball moved rigidly

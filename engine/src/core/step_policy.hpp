@@ -7,7 +7,7 @@
 /// One rule holds whatever the policy: an attempt whose Newton never took an iterate
 /// (every line search failed, so x is still the initial guess) is no solution. Accepting
 /// it would advance time with the body frozen where it was; a stairs run did exactly that
-/// for 45 steps (session 15) before this rule.
+/// for 45 steps before this rule.
 #include "fsi/scenario.hpp"
 #include "solve/newton.hpp"
 

@@ -5,9 +5,9 @@
 /// The stairs spend hours on a ball that is in flight most of the time, far from every
 /// wall, where nothing needs k = 1e-3 s: 40 ms of flight at k, 2k, 4k and 8k end at the
 /// same place to 0.2 mm and the same speed to 1e-4 m/s, for 1, 0.55, 0.28 and 0.15 of the
-/// CPU time (docs/solver.md, "Longer steps away from the walls"). Near a wall the step
+/// CPU time (docs/method.md, "Time-step length"). Near a wall the step
 /// stays k: there the cut passes the thin rows and the contact force acts, and the runs
-/// failed at 2k (session 11).
+/// failed at 2k.
 ///
 /// With numerics.time_step_max_s > 0 the next step is k 2^j for the largest j with
 ///   k 2^j <= time_step_max_s,
@@ -26,10 +26,10 @@
 /// interface: min_distance 0) always k. The third keeps the interface
 /// from crossing more of a patch per step than k does in the thin rows: the graded rows
 /// above the treads reach 10 cm up, and there 8e-3 s steps (3.5 mm in 21 mm rows) failed
-/// where the cut moved past nodes (rho_f = 100 at t = 6.2 s, session 17). Besides, the
+/// where the cut moved past nodes (rho_f = 100 at t = 6.2 s). Besides, the
 /// step grows by at most 2 per step and only while Newton converges easily, halves when
 /// Newton labours, and any trouble sends it back to k (next_time_step_limit): with the
-/// geometric conditions alone 4e-3 s steps still failed there (session 17), after a
+/// geometric conditions alone 4e-3 s steps still failed there, after a
 /// halved step had been followed by a 4e-3 s one.
 #include "fe/cut_mesh.hpp"
 #include "fsi/scenario.hpp"
@@ -46,7 +46,7 @@ inline constexpr double kStepsToWallZone = 4.0;
 /// steps of 4e-3 s (0.77 mm, 1/8 of the 6 mm rows it cut) met cut changes that k takes in
 /// its stride with residuals of 1e4 at their start and three unconverged steps; at k it
 /// moves 0.19 mm (1/32). A ball at rest on the floor (|v| < 0.017 m/s) still takes 8e-3 s
-/// steps: 69 instead of 500 for 0.5 s, the same motion (docs/solver.md, session 19).
+/// steps: 69 instead of 500 for 0.5 s, the same motion (docs/method.md, "Time-step length").
 inline constexpr double kWallZonePatchFraction = 0.25;
 
 /// In the wall zone a body counts as slow only if its solid nodes stay slow for this long
@@ -54,7 +54,7 @@ inline constexpr double kWallZonePatchFraction = 0.25;
 /// through zero (the stiff contact-study ball decelerates at about 8 m/s^2), and a rule
 /// on the speed alone took 1e-3 and 2e-3 s steps there, in which the squeeze film drains
 /// faster (its CIP leak grows with k) and the ball's rims were pulled onto the ground
-/// (docs/solver.md, session 28). At the turn the look-ahead adds 0.16 m/s or more, enough
+/// (docs/method.md, "Time-step length"). At the turn the look-ahead adds 0.16 m/s or more, enough
 /// to keep k = 5e-4 s in the ground's 3 mm rows; a ball settling in the film (1 cm/s,
 /// about 0.05 m/s^2) gains 1 mm/s and keeps its longer steps (with 0.05 s the
 /// integration test's sinking ball lost them).
@@ -62,7 +62,7 @@ inline constexpr double kWallZoneLookahead_s = 0.02;
 
 /// A step that converged at its first attempt in at most this many Newton iterations lets
 /// the next one be twice as long. Calm flight takes 4-7 at 8e-3 s (and 3-5 at k); the
-/// rho_f = 100 failure of session 17 was preceded by steps of 8-13 and by unconverged
+/// rho_f = 100 stairs failure at t = 6.2 s was preceded by steps of 8-13 and by unconverged
 /// ones, each followed by another long step.
 inline constexpr int kCalmNewtonIterations = 7;
 

@@ -171,8 +171,8 @@ CutData cut_data(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& o
     const double snap = std::max(options.snap, length > 0.0 ? options.snap_distance_m / length : 0.0);
     // Never onto a wall node: the interface there is real contact, and the no-slip node
     // holds the body (a cut 1.9 mm beside the stairs' tread edge, on the 6.3 cm sides of
-    // the fan patch, snapped onto the edge and the ball stuck to it; docs/solver.md "Tread
-    // edges"). Such a cut moves to snap x side from the wall node instead: no thinner
+    // the fan patch, snapped onto the edge and the ball stuck to it; docs/method.md
+    // "Corners push like walls"). Such a cut moves to snap x side from the wall node instead: no thinner
     // sliver than snapping allows, and still off the wall.
     const double off_wall = std::min(snap, 0.5);
     if (t < snap && t <= 1.0 - t) {  // the nearer corner

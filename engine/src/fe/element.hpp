@@ -4,7 +4,7 @@
 ///
 /// Sub-quads are bilinear isoparametric (Q1) elements, sub-triangles linear (P1).
 /// Quadrature: 2x2 Gauss per quad, the 3-point degree-2 rule per triangle (exact for
-/// the P1 mass matrix), as in NUMERICS.md 1.
+/// the P1 mass matrix; docs/method.md, "The discrete space").
 #include <array>
 #include <vector>
 

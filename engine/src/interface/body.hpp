@@ -1,7 +1,7 @@
 #pragma once
 /// \file body.hpp
 /// The body's initial geometry d0 (signed distance, negative inside) and the Initial
-/// Point Set level set phi(x) = d0(x - u(x)) (Sect. 6.2 / NUMERICS.md 2).
+/// Point Set level set phi(x) = d0(x - u(x)) (docs/method.md, "The interface").
 #include "fe/point_locator.hpp"
 #include "fsi/scenario.hpp"
 

@@ -13,7 +13,7 @@ namespace fsi::io {
 namespace {
 
 /// The columns every version wrote; files written before the cavitation column existed
-/// (before session 9) end here and still read back (continued runs).
+/// end here and still read back (continued runs).
 constexpr const char* kCommonHeader =
     "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
     "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error";

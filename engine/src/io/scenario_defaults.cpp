@@ -1,4 +1,4 @@
-// The chapter's Example 1 as the default scenario (NUMERICS.md 6).
+// The chapter's Example 1 as the default scenario (docs/method.md, "Example 1").
 #include "fsi/scenario.hpp"
 
 namespace fsi {

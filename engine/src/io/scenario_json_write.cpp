@@ -123,8 +123,9 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"rereference_angle_rad", n.rereference_angle_rad == defaults.rereference_angle_rad}};
   for (const auto& [key, is_default] : at_default)
     if (is_default) writer.object["numerics"].erase(key);
-  // Likewise contact.corners_as_walls (session 24) at its default: checkpoints written
-  // before it go on with tread edges that push like walls (docs/solver.md, "Tread edges").
+  // Likewise contact.corners_as_walls at its default: checkpoints written before the key
+  // existed go on with tread edges that push like walls (docs/method.md, "Corners push
+  // like walls").
   if (scenario.contact.corners_as_walls == ContactSpec{}.corners_as_walls)
     writer.object["contact"].erase("corners_as_walls");
   return std::move(writer.object);
@@ -148,7 +149,7 @@ std::string fingerprint(const Scenario& scenario) {
   // Since checkpoint version 4 the solver controls are left out too: they decide how hard
   // Newton tries and what happens when it fails, not the discrete problem a state belongs
   // to, so a run may go on from its checkpoint with another budget or failure policy
-  // (the rho_f = 1000 stairs run, docs/solver.md).
+  // (the rho_f = 1000 stairs run, docs/solver.md "Failure policy").
   for (const char* key : io::kSolverControlKeys) object["numerics"].erase(key);
   return io::hash_hex(object);
 }

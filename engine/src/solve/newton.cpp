@@ -174,7 +174,7 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
     for (int halving = 0; halving < 4; ++halving, lambda *= 0.5) {
       x_try = x + lambda * dx;
       // An update that turns the solid inside out is refused before its residual is
-      // even computed: its residual may well be smaller (session 28: 1.2e4 -> 6.2e3 with
+      // even computed: its residual may well be smaller (soft ball: 1.2e4 -> 6.2e3 with
       // 38 points inverted), but from there Newton stalls on a singular Jacobian.
       inverted_try = system.inverted_solid_points(x_try);
       if (inverted_try > inverted) continue;

@@ -4,7 +4,7 @@
 /// cost, and a reused LU factorization.
 ///
 /// The Jacobian is exact (automatic differentiation), but factorizing it is the most
-/// expensive stage of a step (DESIGN.md: 0.1 s on 4225 nodes, 0.6 s on 16641). The
+/// expensive stage of a step (0.1-0.3 s on 4225 nodes, 0.6-1.8 s on 16641). The
 /// factorization is therefore kept across iterations and time steps while it still
 /// contracts the residual by `reuse_contraction` per iteration; when it does not, the
 /// Jacobian is re-assembled at the current iterate and refactorized. A backtracking

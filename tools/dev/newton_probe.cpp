@@ -1,0 +1,193 @@
+// fsi-newton-probe: what Newton faces in the next step of a checkpointed state.
+//
+//   fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--start interpolated|repair|solid]
+//
+// Builds the step the engine would take next (the geometry from u, T_m and the old
+// values, Newton's start) and reports: how the start was made (nodes re-interpolated,
+// nodes continued from the solid field), the smallest det(I - grad u) over the solid
+// quadrature points at the start, the largest Jacobian entry and UMFPACK's rcond, then N
+// iterations of plain Newton (a fresh exact Jacobian in every iteration, a line search of
+// up to 12 halvings) with the residual's peak and the smallest det(I - grad u) after
+// each. `--start` picks Newton's start (core/initial_guess.hpp): `repair` (the default) is
+// the engine's first attempt, `solid` its retry, `interpolated` plain re-interpolation. A
+// diagnostic for stalled steps (docs/solver.md, "Diagnostics"); it changes nothing.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/fsi_system.hpp"
+#include "core/initial_guess.hpp"
+#include "fe/cut_mesh.hpp"
+#include "fe/element.hpp"
+#include "fe/point_locator.hpp"
+#include "fsi/scenario.hpp"
+#include "interface/body.hpp"
+#include "interface/step_mapping.hpp"
+#include "io/checkpoint.hpp"
+#include "mesh/patch_mesh.hpp"
+#include "solve/sparse_lu.hpp"
+
+namespace {
+
+using namespace fsi;
+
+const char* kFieldName[] = {"v_x", "v_y", "u_x", "u_y", "p"};
+
+struct Options {
+  std::string scenario, checkpoint;
+  int iterations = 8;
+  core::StartMode start = core::StartMode::repair_unphysical;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--iterations" && i + 1 < argc) {
+      o.iterations = std::atoi(argv[++i]);
+      if (o.iterations < 0 || o.iterations > 200)
+        throw std::invalid_argument("fsi-newton-probe: --iterations must be an integer in [0, 200]");
+    } else if (a == "--start" && i + 1 < argc) {
+      const std::string m = argv[++i];
+      if (m == "interpolated") o.start = core::StartMode::interpolated;
+      else if (m == "repair") o.start = core::StartMode::repair_unphysical;
+      else if (m == "solid") o.start = core::StartMode::solid_field;
+      else throw std::invalid_argument("fsi-newton-probe: --start must be interpolated, repair or solid, not " + m);
+    } else if (!a.empty() && a[0] == '-') {
+      throw std::invalid_argument("fsi-newton-probe: unknown option " + a);
+    } else {
+      positional.push_back(a);
+    }
+  }
+  if (positional.size() != 2)
+    throw std::invalid_argument("usage: fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--start interpolated|repair|solid]");
+  o.scenario = positional[0];
+  o.checkpoint = positional[1];
+  return o;
+}
+
+/// Row scale of the engine's residual norm: 1 / max_j |J_ij|.
+Eigen::VectorXd row_scale(const solve::SparseMatrix& j) {
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(j.rows());
+  for (int c = 0; c < j.outerSize(); ++c)
+    for (solve::SparseMatrix::InnerIterator it(j, c); it; ++it)
+      s[it.row()] = std::max(s[it.row()], std::abs(it.value()));
+  for (Eigen::Index i = 0; i < s.size(); ++i) s[i] = s[i] > 0.0 ? 1.0 / s[i] : 1.0;
+  return s;
+}
+
+void print_row(const char* what, Eigen::Index row, const fe::CutMesh& cut) {
+  const int node = static_cast<int>(row / kFieldsPerNode);
+  std::printf("%s%s%s of node %d (%.5f, %.5f) m", what, *what ? " " : "", kFieldName[row % kFieldsPerNode], node,
+              cut.x[node].x(), cut.x[node].y());
+}
+
+int run(const Options& o) {
+  const Scenario scenario = load_scenario(o.scenario);
+  const State state = io::read_checkpoint(o.checkpoint, fingerprint(scenario));
+  const mesh::PatchMesh mesh = mesh::build_patch_mesh(scenario.mesh, scenario.walls);
+  const fe::PatchBuckets buckets(mesh);
+  const NumericsSpec& n = scenario.numerics;
+  const fe::CutOptions cut_options{n.cut_snap, n.cut_snap_distance_m};
+
+  // The step as Engine::step() builds it (engine.cpp: after_state_change, attempt).
+  const fe::CutMesh current = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut});
+  const fe::CutMesh previous =
+      fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut});
+  const fe::CutMesh next = fe::build_cut_mesh(
+      mesh, fe::cut_data(mesh, interface::ips_level_set(scenario.body, current, buckets, state.solution), cut_options));
+  const fe::QuadratureTable quad = fe::build_quadrature(next);
+  const double k = n.time_step_s;
+  core::FsiSystem system(scenario, mesh);
+  system.set_geometry(next, quad, k);
+  interface::MappingOptions mo;
+  mo.k_s = k;
+  mo.eps_patches = n.blend_eps_patches;
+  mo.delta_patches = n.blend_delta_patches;
+  mo.identity_gap_m = n.identity_gap_m;
+  std::vector<forms::OldValues> old;
+  interface::compute_old_values(mesh, buckets, next, quad, {&current, &state.solution},
+                                {&previous, &state.previous_solution}, scenario.body, scenario.walls, mo, old);
+  system.set_old_values(std::move(old));
+
+  core::InitialGuessStats guess;
+  Eigen::VectorXd x = core::initial_guess(mesh, buckets, current, next, state.solution, &guess, o.start);
+  std::printf("step %ld -> %ld (t = %.6f s, k = %g s), %d unknowns\n", state.step, state.step + 1, state.time_s, k,
+              system.size());
+  std::printf("start: %d nodes re-interpolated, %d continued from the solid field\n", guess.moved_nodes,
+              guess.extrapolated_nodes);
+  const core::SolidDeterminant start_det = core::solid_determinant(next, quad, x);
+  std::printf("det(I - grad u) at the start: smallest %.4f at (%.5f, %.5f) m; %d solid points <= 0\n",
+              start_det.smallest, start_det.where.x(), start_det.where.y(), start_det.non_positive);
+
+  solve::SparseMatrix jacobian = system.pattern();
+  Eigen::VectorXd r, r_try;
+  for (int it = 0; it <= o.iterations; ++it) {
+    system.residual_and_jacobian(x, r, jacobian);
+    const Eigen::VectorXd scale = row_scale(jacobian);
+    Eigen::Index peak = 0;
+    const double norm = r.cwiseProduct(scale).cwiseAbs().maxCoeff(&peak);
+    solve::SparseLU lu;
+    const bool ok = lu.factorize(jacobian);
+    if (it == 0) {
+      Eigen::Index row = 0, col = 0;
+      double largest = 0.0;
+      for (int c = 0; c < jacobian.outerSize(); ++c)
+        for (solve::SparseMatrix::InnerIterator e(jacobian, c); e; ++e)
+          if (std::abs(e.value()) > largest) {
+            largest = std::abs(e.value());
+            row = e.row();
+            col = c;
+          }
+      std::printf("largest Jacobian entry %.3g: ", largest);
+      print_row("row", row, next);
+      print_row(", column", col, next);
+      std::printf("\n");
+    }
+    std::printf("iteration %2d: residual %.4g at ", it, norm);
+    print_row("", peak, next);
+    std::printf(", rcond %.2g", lu.rcond());
+    if (!ok) {
+      std::printf(": singular\n");
+      return 1;
+    }
+    if (it == o.iterations || norm < 1e-10) {
+      std::printf("\n");
+      break;
+    }
+    const Eigen::VectorXd dx = -lu.solve(r);
+    double lambda = 1.0, trial = norm;
+    for (int h = 0; h <= 12; ++h, lambda *= 0.5) {
+      system.residual(x + lambda * dx, r_try);
+      trial = r_try.cwiseProduct(scale).cwiseAbs().maxCoeff();
+      if (trial < norm) break;
+    }
+    if (!(trial < norm)) {
+      std::printf(": no decrease down to 1/4096 of the step\n");
+      return 1;
+    }
+    x += lambda * dx;
+    // Where Newton goes: St. Venant-Kirchhoff has no barrier against inversion, and a
+    // stalled step that leaves solid points at det <= 0 is what the solid cannot recover from.
+    const core::SolidDeterminant det = core::solid_determinant(next, quad, x);
+    std::printf(", step x %g -> %.4g; det(I - grad u) >= %.3f (%d <= 0)\n", lambda, trial, det.smallest,
+                det.non_positive);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(parse(argc, argv));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+}
