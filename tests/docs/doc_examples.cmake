@@ -33,7 +33,8 @@ function(doc_example name out_var)
   set(${out_var} "${_code}" PARENT_SCOPE)
 endfunction()
 
-set(_tmp ${BINARY_DIR}/test_tmp/doc_examples)
+get_filename_component(_doc_name ${DOC} NAME_WE)
+set(_tmp ${BINARY_DIR}/test_tmp/doc_examples/${_doc_name})
 
 if(KIND STREQUAL "sh")
   doc_example(${EXAMPLE} _code)
