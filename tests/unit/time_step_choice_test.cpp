@@ -136,8 +136,14 @@ TEST(TimeStepChoice, InTheWallZoneLongerStepsOnlyForASlowBodyWhenAllowed) {
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.19, 0.0), 0.006, 1.0), 1e-3);
   // Arriving at 0.5 m/s: k.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.0, -0.5), 0.004, 1.0), 1e-3);
-  // Real contact (or no interface): k.
-  EXPECT_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), kWide, 1.0), 1e-3);
+  // No interface (no patch is cut: infinite side): k.
+  EXPECT_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), std::numeric_limits<double>::infinity(), 1.0), 1e-3);
+  // Real contact at rest: the zone's longest step, as far as the patch rule allows.
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), 0.004, 1.0), 4e-3);
+  // Real contact at 0.02 m/s in 4 mm rows: 2e-3 s moves it 0.04 mm (1/100 of the row),
+  // 4e-3 s 0.08 mm, within the 1/32 (0.125 mm); at 0.05 m/s 2e-3 s (0.1 mm).
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0, 0.02, 0.0), 0.004, 1.0), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0, 0.05, 0.0), 0.004, 1.0), 2e-3);
   // The controller's limit binds there too.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.0, 0.0), kWide, 1.0, 2e-3), 2e-3);
   // Just outside the zone a slow body keeps the longer of the two rules.
