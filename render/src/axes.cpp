@@ -28,6 +28,13 @@ AxisTicks make_ticks(const AxisMap& map, float length_px, float spacing_px) {
     const double step = nice_step(map.lo, map.hi, target);
     for (double v : t.values) t.labels.push_back(format_tick(v, step));
   }
+  // A typeset minus sign (U+2212, as wide as a digit) instead of the hyphen: "-0.5"
+  // reads as "−0.5".
+  for (std::string& l : t.labels) {
+    for (std::size_t at = l.find('-'); at != std::string::npos; at = l.find('-', at + 3)) {
+      l.replace(at, 1, "\u2212");
+    }
+  }
   // An axis shorter than two spacings (a thin strip of a letterboxed zoom) still gets two
   // or three nice ticks, whose labels would overlap: keep every 2nd, 4th, ... of them
   // until neighbours are half a spacing apart (one label at least).
