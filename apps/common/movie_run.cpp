@@ -60,6 +60,10 @@ class MovieRun {
     spec_.keep_aspect = !options.stretch;
     spec_.title = scenario.name;
     spec_.range = movie_color_range(scenario, spec_.quantity, engine_.view());
+    if (options.second_field) {
+      spec_.second_quantity = options.second_field;
+      spec_.second_range = movie_color_range(scenario, *options.second_field, engine_.view());
+    }
     summary_.add_output(options.out_dir / "functionals.csv");
     // The scenario the run uses, --set overrides applied (fsi-movie scenario.json OUT2
     // repeats the run; the study scripts read its parameters).
@@ -162,11 +166,14 @@ class MovieRun {
     last_frame_step_ = view.step;
     char name[48];
     std::snprintf(name, sizeof name, "frame_%06ld.png", view.step);
+    // Only what is written gets made: no picture for a --no-png --no-video run, no
+    // PNG encoding for a video-only one. The image's storage is reused frame to frame.
     if (options_.png || video_active()) {
-      const render::Image image = renderer_.render(view, spec_);
-      if (options_.png) render::write_png(options_.out_dir / "frames" / name, image);
+      if (options_.film_inset) spec_.inset = render::film_window(view);
+      renderer_.render(view, spec_, image_);
+      if (options_.png) render::write_png(options_.out_dir / "frames" / name, image_);
 #ifdef FSI_RENDER_HAS_VIDEO
-      if (video_) video_->write(image);
+      if (video_) video_->write(image_);
 #endif
     }
     if (options_.vtu) io::write_vtk_frame(options_.out_dir / "vtk", "frame", view, pvd_);
@@ -216,6 +223,7 @@ class MovieRun {
   FunctionalsHistory history_;
   render::Renderer renderer_;
   render::FrameSpec spec_;
+  render::Image image_;  ///< the latest frame, its storage reused
 #ifdef FSI_RENDER_HAS_VIDEO
   std::optional<render::VideoWriter> video_;
 #endif
