@@ -288,6 +288,44 @@ TEST(MovieApp, StretchLetsAThinZoomFillThePicture) {
   EXPECT_GT(filled, 120) << "of 240 rows (the rest: title, axes)";
 }
 
+TEST(MovieApp, SecondFieldAndFilmInsetOptions) {
+  // Velocity and pressure side by side (the film inset is absent while the ball is far
+  // from the floor), and a video-only run that writes no PNG at all.
+  const fs::path two = fresh_dir("two_panels"), video_only = fresh_dir("video_only");
+  ASSERT_EQ(wait_exit_code(start_movie({kScenario.string(), two.string(), "--end-time", "0.01",
+                                        "--second-field", "p", "--film-inset", "--no-video",
+                                        "--no-vtu", "--quiet"},
+                                       two.string() + ".log")),
+            0)
+      << read_text(two.string() + ".log");
+  const fsi::render::Image im = fsi::render::read_png(two / "frames/frame_000000.png");
+  EXPECT_EQ(im.width, 320);
+  // Both halves hold a colour bar: strongly coloured pixels on either side.
+  int left = 0, right = 0;
+  for (int y = 0; y < im.height; ++y) {
+    for (int x = 0; x < im.width; ++x) {
+      const std::uint8_t* p = &im.rgba[im.offset(x, y)];
+      const bool colour = std::abs(int(p[0]) - int(p[2])) > 80;
+      (x < im.width / 2 ? left : right) += colour;
+    }
+  }
+  EXPECT_GT(left, 100);
+  EXPECT_GT(right, 100);
+  EXPECT_EQ(wait_exit_code(start_movie({kScenario.string(), two.string() + "_bad", "--second-field",
+                                        "speed"},
+                                       two.string() + "_bad.log")),
+            2);
+#ifdef FSI_RENDER_HAS_VIDEO
+  ASSERT_EQ(wait_exit_code(start_movie({kScenario.string(), video_only.string(), "--end-time",
+                                        "0.02", "--no-png", "--no-vtu", "--quiet"},
+                                       video_only.string() + ".log")),
+            0)
+      << read_text(video_only.string() + ".log");
+  EXPECT_FALSE(fs::exists(video_only / "frames"));
+  EXPECT_GT(fsi::render::probe_video(video_only / "movie.mp4").frames, 0);
+#endif
+}
+
 TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   const fs::path out = fresh_dir("interrupted");
   const auto start = std::chrono::steady_clock::now();
