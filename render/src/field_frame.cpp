@@ -143,6 +143,11 @@ Margins panel_margins(const FrameSpec& spec, const ViewWindow& w, const ColorRan
   return m;
 }
 
+// The colour bar right of a field area, as tall as it.
+Rect colorbar_box(const Rect& area, float ch) {
+  return {area.x1 + 1.5f * ch, area.y0, area.x1 + 2.8f * ch, area.y1};
+}
+
 // Lays out a panel of `region`'s width between `top` and `bottom`: the field area as
 // large as fits (keeping the window's aspect if asked), centred with its margins.
 Panel layout_panel(const FrameSpec& spec, const ViewWindow& w, Quantity q, const ColorRange& range,
@@ -162,7 +167,7 @@ Panel layout_panel(const FrameSpec& spec, const ViewWindow& w, Quantity q, const
     area = {ax, ay, ax + aw, ay + ah};
   }
   Panel p{q, range, area, {}, {w.x0, w.x1, area.x0, area.x1}, {w.y0, w.y1, area.y1, area.y0}};
-  p.bar = {area.x1 + 1.5f * ch, area.y0, area.x1 + 2.8f * ch, area.y1};
+  p.bar = colorbar_box(area, ch);
   return p;
 }
 
@@ -299,6 +304,21 @@ void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, I
     laid.push_back(layout_panel(spec, w, panels[i].first, panels[i].second, share * float(i),
                                 share * float(i + 1), top, bottom, s));
   }
+  if (spec.keep_aspect && laid.size() > 1) {
+    // Side by side panels as large as the smallest (their colour bars' labels differ in
+    // width), each shrunk about its centre: one scale for both.
+    float w_min = INFINITY;
+    for (const Panel& p : laid) w_min = std::min(w_min, p.area.width());
+    for (Panel& p : laid) {
+      const float k = w_min / p.area.width(), cx = (p.area.x0 + p.area.x1) / 2,
+                  cy = (p.area.y0 + p.area.y1) / 2;
+      const float hw = p.area.width() * k / 2, hh = p.area.height() * k / 2;
+      p.area = {cx - hw, cy - hh, cx + hw, cy + hh};
+      p.mx = {w.x0, w.x1, p.area.x0, p.area.x1};
+      p.my = {w.y0, w.y1, p.area.y1, p.area.y0};
+      p.bar = colorbar_box(p.area, ch);
+    }
+  }
   for (const Panel& p : laid) draw_panel(c, view, spec, p, s);
 
   const Rect& first = laid.front().area;
@@ -309,16 +329,17 @@ void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, I
     c.text(buf, first.x0, first.y0 - 0.8f * ch, s, ink, Align::start, Align::end);
     time_right = first.x0 + Canvas::text_width(buf, s);
   }
-  if (!spec.title.empty()) {
-    // Centred over the field(s), unless that would run into the time stamp or a colour
-    // bar label. A title too long for its room is drawn smaller (down to the labels'
-    // size), and if it still does not fit, cut with "..." rather than by the picture's
-    // edge.
-    const float x_min = time_right + 2.0f * ch;
-    float x_max = spec.width - pad;
-    if (spec.show_colorbar) x_max = laid.back().bar.x0 - 2.0f * ch;
-    if (spec.show_colorbar && laid.size() > 1) x_max = laid.front().bar.x0 - 2.0f * ch;
-    const float room = std::max(x_max - x_min, 4.0f * ch);
+  // The title's room: between the time stamp and the first colour bar's label.
+  const float x_min = time_right + 2.0f * ch;
+  const float x_max = spec.show_colorbar ? laid.front().bar.x0 - 2.0f * ch
+                      : laid.size() > 1  ? laid.back().area.x0 - 2.0f * ch
+                                         : spec.width - pad;
+  const float room = x_max - x_min;
+  if (!spec.title.empty() && room >= 3.0f * ch) {
+    // Centred over the (first) field, unless that would run into the time stamp or a
+    // colour bar label. A title too long for its room is drawn smaller (down to the
+    // labels' size), and if it still does not fit, cut with "..." rather than by the
+    // picture's edge; with no room at all (two panels on a thumbnail) it is left out.
     std::string title = spec.title;
     float ts = s + 0.5f, tw = Canvas::text_width(title, ts);
     if (tw > room) {
@@ -332,7 +353,7 @@ void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, I
         tw = Canvas::text_width(title, ts);
       } while (tw > room && keep > 0);
     }
-    const float centre = laid.size() > 1 ? (first.x0 + laid.front().bar.x0) / 2 : (first.x0 + first.x1) / 2;
+    const float centre = (first.x0 + first.x1) / 2;
     const float x = std::clamp(centre - tw / 2, x_min, std::max(x_min, x_max - tw));
     c.text(title, x, first.y0 - 0.8f * ch, ts, ink, Align::start, Align::end);
   }
