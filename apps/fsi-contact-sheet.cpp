@@ -58,7 +58,8 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) return usage(a + " needs a value");
       const std::string v = argv[++i];
       if (a == "--tile-width") {
-        if (!parse_positive(v, tile_width)) return usage("--tile-width wants pixels, got '" + v + "'");
+        if (!parse_positive(v, tile_width))
+          return usage("--tile-width wants pixels, got '" + v + "'");
       } else {
         const std::size_t x = v.find('x');
         if (x == std::string::npos || !parse_positive(v.substr(0, x), cols) ||

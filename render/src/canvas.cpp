@@ -139,13 +139,16 @@ Rect Canvas::snapped_bar(float c, float from, float to, float w, bool vertical) 
   const float s = float(supersample_);
   const float wpx = std::max(1.0f, std::round(w * s));
   const float lo = std::round(c * s - wpx / 2) / s, hi = lo + wpx / s;
-  const float a = std::round(std::min(from, to) * s) / s, b = std::round(std::max(from, to) * s) / s;
-  return vertical ? Rect{lo, a, hi, std::max(b, a + 1 / s)} : Rect{a, lo, std::max(b, a + 1 / s), hi};
+  const float a = std::round(std::min(from, to) * s) / s,
+              b = std::round(std::max(from, to) * s) / s;
+  return vertical ? Rect{lo, a, hi, std::max(b, a + 1 / s)}
+                  : Rect{a, lo, std::max(b, a + 1 / s), hi};
 }
 
 void Canvas::fill_rect(const Rect& r, Rgba c) {
   const Rect q = snapped(r);
-  vertices_.assign({{q.x0, q.y0}, {q.x1, q.y0}, {q.x1, q.y1}, {q.x0, q.y0}, {q.x1, q.y1}, {q.x0, q.y1}});
+  vertices_.assign(
+      {{q.x0, q.y0}, {q.x1, q.y0}, {q.x1, q.y1}, {q.x0, q.y0}, {q.x1, q.y1}, {q.x0, q.y1}});
   triangles(vertices_, c);
 }
 
@@ -186,7 +189,8 @@ void Canvas::segments(const std::vector<Vec2>& p, float w, Rgba c, bool round_jo
     const float dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
     if (!round_joins && (dx == 0 || dy == 0) && len > 0) {
       const bool vertical = dx == 0;
-      const Rect bar = vertical ? snapped_bar(a.x, a.y, b.y, w, true) : snapped_bar(a.y, a.x, b.x, w, false);
+      const Rect bar =
+          vertical ? snapped_bar(a.x, a.y, b.y, w, true) : snapped_bar(a.y, a.x, b.x, w, false);
       const Rgba ink = w < f ? full : c;
       for (const Vec2 v : {Vec2{bar.x0, bar.y0}, Vec2{bar.x1, bar.y0}, Vec2{bar.x1, bar.y1},
                            Vec2{bar.x0, bar.y0}, Vec2{bar.x1, bar.y1}, Vec2{bar.x0, bar.y1}}) {

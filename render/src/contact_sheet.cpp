@@ -91,7 +91,8 @@ Image contact_sheet(const std::vector<Image>& frames, int columns, int tile_widt
                                   std::to_string(first.height) + ")");
     }
   }
-  const int tile_height = std::max(1, int(std::lround(double(tile_width) * first.height / first.width)));
+  const int tile_height =
+      std::max(1, int(std::lround(double(tile_width) * first.height / first.width)));
   const int cols = std::min<int>(columns, int(frames.size()));
   const int rows = (int(frames.size()) + cols - 1) / cols;
   Image sheet = Image::filled(gap + cols * (tile_width + gap), gap + rows * (tile_height + gap));

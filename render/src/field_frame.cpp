@@ -163,7 +163,8 @@ Panel layout_panel(const FrameSpec& spec, const ViewWindow& w, Quantity q, const
     const double ppm = std::min(avail.width() / (w.x1 - w.x0), avail.height() / (w.y1 - w.y0));
     const float aw = float(ppm * (w.x1 - w.x0)), ah = float(ppm * (w.y1 - w.y0));
     // Centre the field area and its margins together.
-    const float ax = x0 + m.left + (avail.width() - aw) / 2, ay = avail.y0 + (avail.height() - ah) / 2;
+    const float ax = x0 + m.left + (avail.width() - aw) / 2,
+                ay = avail.y0 + (avail.height() - ah) / 2;
     area = {ax, ay, ax + aw, ay + ah};
   }
   Panel p{q, range, area, {}, {w.x0, w.x1, area.x0, area.x1}, {w.y0, w.y1, area.y1, area.y0}};

@@ -22,8 +22,8 @@ TEST(ContactSheet, ShrinkAveragesAreas) {
   Image three = Image::filled(3, 1, 0, 0, 0);
   three.rgba[three.offset(2, 0)] = 240;  // red channel of the last column
   const Image two = shrink(three, 2, 1);
-  EXPECT_EQ(two.rgba[0], 0);           // 1 * col0 + 0.5 * col1, both 0
-  EXPECT_EQ(two.rgba[4], 160);         // (0.5 * 0 + 1 * 240) / 1.5
+  EXPECT_EQ(two.rgba[0], 0);    // 1 * col0 + 0.5 * col1, both 0
+  EXPECT_EQ(two.rgba[4], 160);  // (0.5 * 0 + 1 * 240) / 1.5
   EXPECT_THROW(shrink(im, 0, 1), std::invalid_argument);
 }
 

@@ -86,9 +86,9 @@ TEST_F(FieldFrame, FilmWindowSpansTheGapUnderTheBody) {
   double lowest = 1e9;
   for (const auto& sg : v.interface) lowest = std::min({lowest, sg.a.y, sg.b.y});
   const double gap = lowest + 1.0;
-  EXPECT_LT(w->y0, -1.0);                  // the floor inside
+  EXPECT_LT(w->y0, -1.0);                         // the floor inside
   EXPECT_NEAR(w->y1, lowest + 0.6 * gap, 1e-12);  // and a little of the ball
-  EXPECT_LT(w->x0, o.ball_x - 0.2);        // the lower part of the ball's width
+  EXPECT_LT(w->x0, o.ball_x - 0.2);               // the lower part of the ball's width
   EXPECT_GT(w->x1, o.ball_x + 0.2);
   o.ball_y = -0.3;  // 40 cm up: no film to show
   EXPECT_FALSE(film_window(sample_field_view(o)));

@@ -1,5 +1,7 @@
 // The typeface behind every label: DejaVu Sans through FreeType, its glyph atlas, and
 // the antialiased text it gives a picture.
+#include "font.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fsi/renderer.hpp>
@@ -8,7 +10,6 @@
 #include <string>
 
 #include "canvas.hpp"
-#include "font.hpp"
 #include "glyph_atlas.hpp"
 
 namespace fsi::render::detail {
@@ -26,8 +27,12 @@ TEST(Font, AMissingFontFileIsNamedInTheError) {
 }
 
 TEST(Font, DecodesUtf8AndMarksBrokenBytes) {
-  EXPECT_EQ(decode_utf8("a\xE2\x88\x92" "b"), (std::u32string{U'a', 0x2212, U'b'}));
-  EXPECT_EQ(decode_utf8("\xCE\xBC" "m"), (std::u32string{0x3BC, U'm'}));  // micro
+  EXPECT_EQ(decode_utf8("a\xE2\x88\x92"
+                        "b"),
+            (std::u32string{U'a', 0x2212, U'b'}));
+  EXPECT_EQ(decode_utf8("\xCE\xBC"
+                        "m"),
+            (std::u32string{0x3BC, U'm'}));  // micro
   EXPECT_EQ(decode_utf8("x\xFFy"), (std::u32string{U'x', 0xFFFD, U'y'}));
   EXPECT_EQ(decode_utf8("\xE2\x88"), (std::u32string{0xFFFD, 0xFFFD}));  // cut short
 }
@@ -40,7 +45,7 @@ TEST(Font, DejaVuSansMetrics) {
   EXPECT_NEAR(f.advance_em(U'0'), 0.636, 0.01);
   EXPECT_FLOAT_EQ(f.advance_em(U'0'), f.advance_em(U'8'));
   EXPECT_FLOAT_EQ(f.advance_em(0x2212), f.advance_em(U'+'));  // minus as wide as plus
-  EXPECT_EQ(f.drawable(0x1F600), U'?');                        // no emoji: '?'
+  EXPECT_EQ(f.drawable(0x1F600), U'?');                       // no emoji: '?'
   EXPECT_FLOAT_EQ(f.width_em(U"ab"), f.advance_em(U'a') + f.advance_em(U'b'));
 }
 
@@ -55,7 +60,8 @@ TEST(GlyphAtlas, RasterizedOncePerSizeAntialiasedAndPacked) {
   std::set<int> levels;
   const AtlasGlyph& o = a.glyph(U'o');
   for (int y = 0; y < o.height; ++y) {
-    for (int x = 0; x < o.width; ++x) levels.insert(a.coverage()[std::size_t(o.y + y) * a.width() + o.x + x]);
+    for (int x = 0; x < o.width; ++x)
+      levels.insert(a.coverage()[std::size_t(o.y + y) * a.width() + o.x + x]);
   }
   EXPECT_GT(levels.size(), 20u) << "a round glyph has many grey levels on its edge";
   // Glyphs do not overlap: every printable ASCII glyph's box is disjoint from 'H's.
@@ -69,8 +75,8 @@ TEST(GlyphAtlas, RasterizedOncePerSizeAntialiasedAndPacked) {
 }
 
 TEST(CanvasText, WidthScalesWithTheSizeAndIgnoresSupersampling) {
-  EXPECT_NEAR(Canvas::text_width("t = 1.234 s", 2.0f), 2.0f * Canvas::text_width("t = 1.234 s", 1.0f),
-              1e-4);
+  EXPECT_NEAR(Canvas::text_width("t = 1.234 s", 2.0f),
+              2.0f * Canvas::text_width("t = 1.234 s", 1.0f), 1e-4);
   EXPECT_EQ(Canvas::text_width("", 2.0f), 0.0f);
 }
 
