@@ -6,7 +6,7 @@
 //   |  scalar field (per-pixel colour map)        | |inset|    |  | 0.0
 //   |  mesh overlay, walls, interface contour     | +----+     |  | -0.2
 //   +---------------------------------------------+            +--+
-//   ticks and labels in metres on the left and bottom edges
+//   x [m] -1.0 ... 1.0   (ticks in metres; "y [m]" and its ticks on the left edge)
 //
 // With FrameSpec::second_quantity the picture holds two such panels side by side, each
 // with its colour bar. Everything is sized in units of the capital height `ch`, itself
@@ -31,6 +31,8 @@ constexpr Rgba mesh_ink{90, 90, 90, 110};
 constexpr Rgba wall_ink{70, 70, 70, 255};
 constexpr Rgba interface_ink{0, 0, 0, 255};
 constexpr Rgba inset_marker_ink{255, 255, 255, 255};
+// The top text row's baseline sits this many capital heights above the field.
+constexpr float text_row_gap = 0.6f;
 
 ViewWindow default_window(const FieldView& view) {
   // A small margin so the walls on the domain boundary are seen whole.
@@ -107,7 +109,7 @@ void draw_colorbar(Canvas& c, const Rect& bar, const ColorRange& range, const Ax
   c.colormap_rect(bar, map);
   c.stroke_rect(bar, lw, ink);
   draw_ticks(c, bar, AxisMap{range.lo, range.hi, bar.y1, bar.y0}, ticks, s, Side::right);
-  quantity_label(c, label, bar.x0, bar.y0 - 0.8f * ch, s);
+  quantity_label(c, label, bar.x0, bar.y0 - text_row_gap * ch, s);
 }
 
 // Where one panel's parts go inside its share of the picture.
@@ -131,8 +133,10 @@ Margins panel_margins(const FrameSpec& spec, const ViewWindow& w, const ColorRan
   Margins m{pad, pad};
   if (spec.show_axes) {
     const AxisTicks yt = make_ticks(AxisMap{w.y0, w.y1, guess_h, 0}, guess_h, y_tick_spacing(s));
-    // rotated "y [m]" (ch tall), a gap, the tick labels, the tick and its gap
-    m.left += ch + 0.8f * ch + max_label_width(yt, s) + 1.0f * ch;
+    // rotated "y [m]" (ch tall), a gap, the tick labels, the tick and its gap; at least
+    // room for "x [m]" before the first x tick label (half of which may stick out left)
+    m.left += std::max(ch + 0.8f * ch + max_label_width(yt, s) + 1.0f * ch,
+                       Canvas::text_width("x [m]", s) + 1.0f * ch + 1.5f * ch);
   }
   if (spec.show_colorbar) {
     const AxisTicks ct =
@@ -143,9 +147,10 @@ Margins panel_margins(const FrameSpec& spec, const ViewWindow& w, const ColorRan
   return m;
 }
 
-// The colour bar right of a field area, as tall as it.
+// The colour bar right of a field area, as tall as it less 0.75 ch at the top: room
+// between the label above the bar and the label of its top tick.
 Rect colorbar_box(const Rect& area, float ch) {
-  return {area.x1 + 1.5f * ch, area.y0, area.x1 + 2.8f * ch, area.y1};
+  return {area.x1 + 1.5f * ch, area.y0 + 0.75f * ch, area.x1 + 2.8f * ch, area.y1};
 }
 
 // Lays out a panel of `region`'s width between `top` and `bottom`: the field area as
@@ -224,7 +229,14 @@ void draw_panel(Canvas& c, const FieldView& view, const FrameSpec& spec, const P
     const AxisTicks yt = make_ticks(p.my, p.area.height(), y_tick_spacing(s));
     draw_ticks(c, p.area, p.mx, xt, s, Side::bottom);
     draw_ticks(c, p.area, p.my, yt, s, Side::left);
-    c.text("x [m]", (p.area.x0 + p.area.x1) / 2, p.area.y1 + 2.8f * ch, s, ink, Align::centre);
+    // "x [m]" opens the row of tick labels (its own row below them would cost the field
+    // a line of height): right-aligned a capital height before the first label.
+    float first_label = p.area.x0;
+    if (!xt.values.empty()) {
+      first_label = std::min(first_label, p.mx(xt.values.front()) -
+                                              Canvas::text_width(xt.labels.front(), s) / 2);
+    }
+    c.text("x [m]", first_label - 1.0f * ch, p.area.y1 + 1.0f * ch, s, ink, Align::end);
     c.text("y [m]", p.area.x0 - 1.8f * ch - max_label_width(yt, s), (p.area.y0 + p.area.y1) / 2, s,
            ink, Align::centre, Align::end, true);
   }
@@ -294,11 +306,12 @@ void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, I
   const float s = auto_text_scale(spec.height, spec.text_scale), ch = Canvas::text_height(s);
   const float pad = 0.8f * ch;
 
-  // One text row on top (time stamp, title, colour bar labels); tick labels and the
-  // x label below the field.
+  // One text row on top (time stamp, title, colour bar labels: the title's capitals are
+  // the tallest), one below the field (the x tick labels and "x [m]", with descenders).
   const bool top_row = spec.show_time || !spec.title.empty() || spec.show_colorbar;
-  const float top = pad + (top_row ? 2.0f * ch : 0.0f);
-  const float bottom = spec.height - pad - (spec.show_axes ? 4.1f * ch : 0.0f);
+  const float title_cap = Canvas::text_height(s + 0.5f);
+  const float top = top_row ? 0.5f * ch + title_cap + text_row_gap * ch : pad;
+  const float bottom = spec.height - (spec.show_axes ? 2.9f * ch : pad);
   std::vector<Panel> laid;
   const float share = float(spec.width) / float(panels.size());
   for (std::size_t i = 0; i < panels.size(); ++i) {
@@ -327,7 +340,7 @@ void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, I
   if (spec.show_time) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "t = %.*f s", std::clamp(spec.time_decimals, 0, 9), view.time_s);
-    c.text(buf, first.x0, first.y0 - 0.8f * ch, s, ink, Align::start, Align::end);
+    c.text(buf, first.x0, first.y0 - text_row_gap * ch, s, ink, Align::start, Align::end);
     time_right = first.x0 + Canvas::text_width(buf, s);
   }
   // The title's room: between the time stamp and the first colour bar's label.
@@ -356,7 +369,7 @@ void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, I
     }
     const float centre = (first.x0 + first.x1) / 2;
     const float x = std::clamp(centre - tw / 2, x_min, std::max(x_min, x_max - tw));
-    c.text(title, x, first.y0 - 0.8f * ch, ts, ink, Align::start, Align::end);
+    c.text(title, x, first.y0 - text_row_gap * ch, ts, ink, Align::start, Align::end);
   }
   c.finish(out);
 }
