@@ -13,7 +13,7 @@ namespace fsi::render::detail {
   X(glBindTexture)                                                                                 \
   X(glBlendFunc)                                                                                   \
   X(glClear)                                                                                       \
-  X(glClearColor) X(glColor4ub) X(glColorPointer) X(glDeleteTextures) X(glDisable)                 \
+  X(glClearColor) X(glColor4ub) X(glColorMask) X(glColorPointer) X(glDeleteTextures) X(glDisable)                 \
       X(glDisableClientState) X(glDrawArrays) X(glDrawElements) X(glEnable) X(glEnableClientState) \
           X(glFinish) X(glGenTextures) X(glGetError) X(glGetString) X(glLoadIdentity)              \
               X(glMatrixMode) X(glOrtho) X(glPixelStorei) X(glReadPixels) X(glScissor)             \
