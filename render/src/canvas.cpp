@@ -45,16 +45,15 @@ void Canvas::begin(int width, int height, int supersample, Rgba bg) {
   gl_.glDisable(GL_DEPTH_TEST);
   gl_.glDisable(GL_CULL_FACE);
   gl_.glDisable(GL_SCISSOR_TEST);
-  gl_.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  // Colour over the paper by the ink's alpha; the paper's alpha composited "over" as
+  // well (srcA + dstA (1 - srcA)), so opaque paper stays opaque. glBlendFunc would write
+  // srcA^2 + dstA (1 - srcA): 0.75 where a half-covered edge pixel lies on opaque paper,
+  // and the PNG of an opaque frame would come out translucent at every antialiased edge.
+  gl_.glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl_.glDisable(GL_BLEND);
   blending_ = false;
-  gl_.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   gl_.glClearColor(bg.r / 255.f, bg.g / 255.f, bg.b / 255.f, bg.a / 255.f);
   gl_.glClear(GL_COLOR_BUFFER_BIT);
-  // The picture keeps the background's alpha: blending would write srcA^2 + dstA (1 -
-  // srcA) there, i.e. 0.75 where a half-covered edge pixel lies on opaque paper, and the
-  // PNG of an opaque frame would come out translucent at every antialiased edge.
-  gl_.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
 }
 
 void Canvas::set_blending(bool on) {

@@ -2,6 +2,9 @@
 // The GL 1.x entry points the drawing code uses, fetched from a RenderContext so that
 // nothing links libGL (OSMesa and EGL each hand out their own dispatch). GL/gl.h is
 // only used for its types, constants and prototypes (for decltype), never called.
+// GL_GLEXT_PROTOTYPES: prototypes (for decltype) of the entry points past GL 1.1 too,
+// e.g. glBlendFuncSeparate (GL 1.4).
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 
 #include "fsi/render_context.hpp"
@@ -11,7 +14,7 @@ namespace fsi::render::detail {
 // X-macro list: one line per function, so the member and its loading stay in sync.
 #define FSI_GL_FUNCTIONS(X)                                                                        \
   X(glBindTexture)                                                                                 \
-  X(glBlendFunc)                                                                                   \
+  X(glBlendFunc) X(glBlendFuncSeparate)                                                                                   \
   X(glClear)                                                                                       \
   X(glClearColor) X(glColor4ub) X(glColorMask) X(glColorPointer) X(glDeleteTextures) X(glDisable)                 \
       X(glDisableClientState) X(glDrawArrays) X(glDrawElements) X(glEnable) X(glEnableClientState) \
