@@ -2,7 +2,7 @@
 // falling-ball field over a graded 65x65-node triangle mesh (4225 nodes, 8192
 // triangles, the size of a coarse engine run):
 //   render  - FieldView -> Image (draw, read back, downsample), per supersampling factor
-//   png     - Image -> PNG file (write_png: libdeflate level 2, unfiltered RGB)
+//   png     - Image -> PNG file (write_png: libdeflate level 4, unfiltered RGB)
 //   video   - Image -> H.264 frame (swscale + libx264 + MP4 mux), per x264 preset
 //   frame and PNG - what fsi-movie does per picture: render into a reused Image with the
 //             default FrameSpec (supersampling 1) and write_png it to a file
