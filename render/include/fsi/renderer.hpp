@@ -63,11 +63,11 @@ struct FrameSpec {
   int supersample = 1;
 };
 
-/// The film under the body: the window from the floor (the domain's bottom) up to a
-/// little above the interface's lowest point, as wide as the lower part of the body
-/// (interface points within 60 % of its radius above the lowest), for FrameSpec::inset.
-/// Its height follows the gap, so the inset magnifies more as the body comes down.
-/// Unset when the view has no interface.
+/// The film under the body, for FrameSpec::inset: from just below the floor (the
+/// domain's bottom) to 0.6 gap above the interface's lowest point, as wide as the body
+/// is within 0.6 radius above that point (plus 5 % each side). Its height follows the
+/// gap, so the inset magnifies more as the body comes down. Unset when the view has no
+/// interface or the gap is wider than half the body's radius (no film to show yet).
 std::optional<ViewWindow> film_window(const FieldView& view);
 
 class Renderer {
