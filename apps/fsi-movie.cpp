@@ -6,12 +6,16 @@
 //             [--field vx|vy|vmag|p|umag] [--no-video] [--no-png] [--no-vtu] [--size WxH]
 //             [--fps N] [--zoom x0,y0,x1,y1 [--stretch]] [--mesh] [--end-time T] [--quiet]
 //             [--checkpoint-every N] [--resume CHECKPOINT | --continue]
+//             [--second-field vx|vy|vmag|p|umag] [--film-inset]
 //
 // --set changes one scenario key (a path into the scenario's JSON, the value as JSON)
 // before the scenario is validated; --frame-every, --field, --size, --fps, --mesh and
 // --end-time are shorthands for --set on /output/... and /numerics/end_time_s.
 // --stretch lets the zoom window fill the picture, x and y scaled apart (the axes say
 // by how much): a film 1 mm high under a ball 0.8 m wide becomes readable.
+// --second-field adds a panel with a second field right of the first (velocity and
+// pressure side by side); --film-inset shows, near contact, an inset that magnifies the
+// film between the ball and the floor.
 // --checkpoint-every N writes OUTDIR/checkpoints/step_<step>.ckpt every N steps;
 // --resume starts from such a checkpoint (same scenario, same --set changes) instead of
 // t = 0, e.g. to re-run the seconds around a contact with other outputs (the outputs
@@ -28,8 +32,9 @@
 //   fsi-movie assets/scenarios/ball_drop.json out/drop --field p --end-time 1 --no-vtu
 //   fsi-movie assets/scenarios/ball_drop.json out/k1e-3 --set /numerics/time_step_s=1e-3
 //   fsi-movie assets/scenarios/contact/d0_1e-3_g800.json out/gap --zoom -0.3,-1,0.3,-0.9 --mesh
-//   fsi-movie assets/scenarios/ball_drop.json out/film --zoom -0.4,-1,0.4,-0.995 --stretch --field p
-//   fsi-movie assets/scenarios/ball_drop.json out/late --resume out/drop/checkpoints/step_002300.ckpt
+//   fsi-movie assets/scenarios/ball_drop.json out/film --zoom -0.4,-1,0.4,-0.995 --stretch --field
+//   p fsi-movie assets/scenarios/ball_drop.json out/talk --second-field p --film-inset fsi-movie
+//   assets/scenarios/ball_drop.json out/late --resume out/drop/checkpoints/step_002300.ckpt
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -53,6 +58,7 @@ constexpr const char* kUsage =
     "                 [--size WxH] [--fps N] [--zoom x0,y0,x1,y1 [--stretch]] [--mesh]\n"
     "                 [--end-time T] [--quiet] [--checkpoint-every N]\n"
     "                 [--resume CHECKPOINT | --continue]\n"
+    "                 [--second-field vx|vy|vmag|p|umag] [--film-inset]\n"
     "  e.g. fsi-movie assets/scenarios/ball_drop_demo.json out/demo --set /solid/mu_pa=4e5\n";
 
 int usage(const std::string& why) {
@@ -96,6 +102,10 @@ Arguments parse_arguments(int argc, char** argv) {
           {"/numerics/end_time_s", fsi::app::parse_number(value(), "command line", opt)});
     } else if (opt == "--zoom") {
       a.movie.zoom = fsi::app::parse_zoom(value(), "command line", opt);
+    } else if (opt == "--second-field") {
+      a.movie.second_field = fsi::app::parse_field(value(), "command line", opt);
+    } else if (opt == "--film-inset") {
+      a.movie.film_inset = true;
     } else if (opt == "--stretch") {
       a.movie.stretch = true;
     } else if (opt == "--mesh") {

@@ -3,8 +3,8 @@
 //
 //   fsi-render-examples OUT_DIR [--size WIDTHxHEIGHT] [--no-video]
 //
-// Writes OUT_DIR/{vy,vmag_mesh,p,umag_zoom,contact_gap_stretched}.png, plot.png,
-// plot_log.png and (when built with video) falling_ball.mp4.
+// Writes OUT_DIR/{vy,vmag_mesh,p,umag_zoom,contact_gap_stretched,vy_p_film_inset}.png,
+// plot.png, plot_log.png and (when built with video) falling_ball.mp4.
 //
 // Examples:
 //   fsi-render-examples out/render-examples
@@ -108,6 +108,19 @@ int main(int argc, char** argv) {
     s.show_mesh = true;
     s.title = "Gap under the ball (stretched)";
     write(out / "contact_gap_stretched.png", r.render(view, s));
+
+    // Velocity and pressure side by side, the ball 4 cm above the floor: the film under
+    // it magnified in each panel's inset.
+    const fsi::FieldView near_floor =
+        sample_field_view({.nx = 49, .ny = 37, .graded = true, .ball_y = -0.66});
+    FrameSpec two;
+    two.width = width;
+    two.height = height;
+    two.title = "Near contact";
+    two.quantity = Quantity::vy;
+    two.second_quantity = Quantity::p;
+    two.inset = film_window(near_floor);
+    write(out / "vy_p_film_inset.png", r.render(near_floor, two));
 
     PlotSpec p = functionals_plot(width * 3 / 4, height * 3 / 4);
     write(out / "plot.png", r.plot(p));

@@ -1,9 +1,13 @@
-// Time per 1280x720 frame of the three stages of movie making, on the synthetic
+// Time per 1280x720 frame of the stages of movie making, on the synthetic
 // falling-ball field over a graded 65x65-node triangle mesh (4225 nodes, 8192
 // triangles, the size of a coarse engine run):
 //   render  - FieldView -> Image (draw, read back, downsample), per supersampling factor
-//   png     - Image -> PNG file (libpng, write_png's default: zlib level 1, unfiltered RGB)
+//   png     - Image -> PNG file (write_png: libdeflate level 4, unfiltered RGB)
 //   video   - Image -> H.264 frame (swscale + libx264 + MP4 mux), per x264 preset
+//   frame and PNG - what fsi-movie does per picture: render into a reused Image with the
+//             default FrameSpec (supersampling 1) and write_png it to a file
+// "On one core": taskset -c 1 build/bench/fsi-bench-render (llvmpipe then draws in
+// the calling thread, so the CPU column is all of the work).
 // Run: build/bench/fsi-bench-render   (tools/bench runs every benchmark)
 #include <benchmark/benchmark.h>
 
@@ -73,12 +77,17 @@ BENCHMARK(BM_Render)
 void BM_RenderMesh(benchmark::State& state) {
   Renderer r{GlBackend::osmesa};
   const fsi::FieldView view = bench_view();
-  FrameSpec spec = bench_spec(2);
+  FrameSpec spec = bench_spec(int(state.range(0)));
   spec.show_mesh = true;
   for (auto _ : state) benchmark::DoNotOptimize(r.render(view, spec));
   per_frame_counter(state);
 }
-BENCHMARK(BM_RenderMesh)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderMesh)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("supersample")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_WritePng(benchmark::State& state) {
   Renderer r{GlBackend::osmesa};

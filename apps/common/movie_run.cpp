@@ -4,11 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <fsi/engine.hpp>
 #include <fsi/error.hpp>
 #include <fsi/output.hpp>
 #include <fsi/png.hpp>
+#include <fstream>
 #include <memory>
 #include <optional>
 #ifdef FSI_RENDER_HAS_VIDEO
@@ -32,14 +32,14 @@ namespace fs = std::filesystem;
 /// spending hours on it. Normal runs stay below 1e-2.
 constexpr double kLostBodyMassError = 0.5;
 
-
 class MovieRun {
  public:
   MovieRun(const Scenario& scenario, const MovieOptions& options)
       : options_(options),
         engine_(scenario),
         summary_(scenario),
-        earlier_(options.continue_run ? std::optional(read_earlier_run(options.out_dir)) : std::nullopt),
+        earlier_(options.continue_run ? std::optional(read_earlier_run(options.out_dir))
+                                      : std::nullopt),
         csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true,
              earlier_ ? earlier_->csv_rows : std::vector<std::string>{}),
         pvd_(options.out_dir / "vtk" / "frames.pvd"),
@@ -60,6 +60,10 @@ class MovieRun {
     spec_.keep_aspect = !options.stretch;
     spec_.title = scenario.name;
     spec_.range = movie_color_range(scenario, spec_.quantity, engine_.view());
+    if (options.second_field) {
+      spec_.second_quantity = options.second_field;
+      spec_.second_range = movie_color_range(scenario, *options.second_field, engine_.view());
+    }
     summary_.add_output(options.out_dir / "functionals.csv");
     // The scenario the run uses, --set overrides applied (fsi-movie scenario.json OUT2
     // repeats the run; the study scripts read its parameters).
@@ -127,9 +131,10 @@ class MovieRun {
       history_.add(st.time_s, st.functionals);
       if (!(st.functionals.mass_error <= kLostBodyMassError)) {
         char why[160];
-        std::snprintf(why, sizeof why,
-                      "the body degenerated at t = %.6g s (relative mass error %.3g > %.2g): stopped",
-                      st.time_s, st.functionals.mass_error, kLostBodyMassError);
+        std::snprintf(
+            why, sizeof why,
+            "the body degenerated at t = %.6g s (relative mass error %.3g > %.2g): stopped",
+            st.time_s, st.functionals.mass_error, kLostBodyMassError);
         meter_.note(std::string("fsi-movie: ") + why);
         summary_.set_stop_reason(why);
         break;
@@ -144,7 +149,8 @@ class MovieRun {
     }
     // A killed study run then continues where it stopped instead of up to
     // checkpoint_every steps (hours, for the stairs) earlier.
-    if (resumable_stop && options_.checkpoint_every > 0 && engine_.state().step != last_checkpoint_step_)
+    if (resumable_stop && options_.checkpoint_every > 0 &&
+        engine_.state().step != last_checkpoint_step_)
       write_checkpoint(engine_.state().step);
     if (engine_.state().step != last_frame_step_) write_frame();  // the last state, always
     meter_.finish();
@@ -162,11 +168,14 @@ class MovieRun {
     last_frame_step_ = view.step;
     char name[48];
     std::snprintf(name, sizeof name, "frame_%06ld.png", view.step);
+    // Only what is written gets made: no picture for a --no-png --no-video run, no
+    // PNG encoding for a video-only one. The image's storage is reused frame to frame.
     if (options_.png || video_active()) {
-      const render::Image image = renderer_.render(view, spec_);
-      if (options_.png) render::write_png(options_.out_dir / "frames" / name, image);
+      if (options_.film_inset) spec_.inset = render::film_window(view);
+      renderer_.render(view, spec_, image_);
+      if (options_.png) render::write_png(options_.out_dir / "frames" / name, image_);
 #ifdef FSI_RENDER_HAS_VIDEO
-      if (video_) video_->write(image);
+      if (video_) video_->write(image_);
 #endif
     }
     if (options_.vtu) io::write_vtk_frame(options_.out_dir / "vtk", "frame", view, pvd_);
@@ -216,6 +225,7 @@ class MovieRun {
   FunctionalsHistory history_;
   render::Renderer renderer_;
   render::FrameSpec spec_;
+  render::Image image_;  ///< the latest frame, its storage reused
 #ifdef FSI_RENDER_HAS_VIDEO
   std::optional<render::VideoWriter> video_;
 #endif

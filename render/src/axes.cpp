@@ -24,9 +24,21 @@ AxisTicks make_ticks(const AxisMap& map, float length_px, float spacing_px) {
     t.values = log_ticks(map.lo, map.hi, target);
     for (double v : t.values) t.labels.push_back(format_tick(v, v));
   } else {
-    t.values = nice_ticks(map.lo, map.hi, target);
-    const double step = nice_step(map.lo, map.hi, target);
+    // A short axis (a colour bar beside a small panel) asks for two ticks, and the nice
+    // step for two can leave a single one inside (0 of [-430, 430] at step 500): ask
+    // for more until two fit.
+    int wanted = target;
+    t.values = nice_ticks(map.lo, map.hi, wanted);
+    while (t.values.size() < 2 && wanted < 8) t.values = nice_ticks(map.lo, map.hi, ++wanted);
+    const double step = nice_step(map.lo, map.hi, wanted);
     for (double v : t.values) t.labels.push_back(format_tick(v, step));
+  }
+  // A typeset minus sign (U+2212, as wide as the plus sign) instead of the hyphen:
+  // "-0.5" reads as "−0.5".
+  for (std::string& l : t.labels) {
+    for (std::size_t at = l.find('-'); at != std::string::npos; at = l.find('-', at + 3)) {
+      l.replace(at, 1, "\u2212");
+    }
   }
   // An axis shorter than two spacings (a thin strip of a letterboxed zoom) still gets two
   // or three nice ticks, whose labels would overlap: keep every 2nd, 4th, ... of them

@@ -45,7 +45,11 @@ void Canvas::begin(int width, int height, int supersample, Rgba bg) {
   gl_.glDisable(GL_DEPTH_TEST);
   gl_.glDisable(GL_CULL_FACE);
   gl_.glDisable(GL_SCISSOR_TEST);
-  gl_.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  // Colour over the paper by the ink's alpha; the paper's alpha composited "over" as
+  // well (srcA + dstA (1 - srcA)), so opaque paper stays opaque. glBlendFunc would write
+  // srcA^2 + dstA (1 - srcA): 0.75 where a half-covered edge pixel lies on opaque paper,
+  // and the PNG of an opaque frame would come out translucent at every antialiased edge.
+  gl_.glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl_.glDisable(GL_BLEND);
   blending_ = false;
   gl_.glClearColor(bg.r / 255.f, bg.g / 255.f, bg.b / 255.f, bg.a / 255.f);
@@ -139,13 +143,16 @@ Rect Canvas::snapped_bar(float c, float from, float to, float w, bool vertical) 
   const float s = float(supersample_);
   const float wpx = std::max(1.0f, std::round(w * s));
   const float lo = std::round(c * s - wpx / 2) / s, hi = lo + wpx / s;
-  const float a = std::round(std::min(from, to) * s) / s, b = std::round(std::max(from, to) * s) / s;
-  return vertical ? Rect{lo, a, hi, std::max(b, a + 1 / s)} : Rect{a, lo, std::max(b, a + 1 / s), hi};
+  const float a = std::round(std::min(from, to) * s) / s,
+              b = std::round(std::max(from, to) * s) / s;
+  return vertical ? Rect{lo, a, hi, std::max(b, a + 1 / s)}
+                  : Rect{a, lo, std::max(b, a + 1 / s), hi};
 }
 
 void Canvas::fill_rect(const Rect& r, Rgba c) {
   const Rect q = snapped(r);
-  vertices_.assign({{q.x0, q.y0}, {q.x1, q.y0}, {q.x1, q.y1}, {q.x0, q.y0}, {q.x1, q.y1}, {q.x0, q.y1}});
+  vertices_.assign(
+      {{q.x0, q.y0}, {q.x1, q.y0}, {q.x1, q.y1}, {q.x0, q.y0}, {q.x1, q.y1}, {q.x0, q.y1}});
   triangles(vertices_, c);
 }
 
@@ -186,7 +193,8 @@ void Canvas::segments(const std::vector<Vec2>& p, float w, Rgba c, bool round_jo
     const float dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
     if (!round_joins && (dx == 0 || dy == 0) && len > 0) {
       const bool vertical = dx == 0;
-      const Rect bar = vertical ? snapped_bar(a.x, a.y, b.y, w, true) : snapped_bar(a.y, a.x, b.x, w, false);
+      const Rect bar =
+          vertical ? snapped_bar(a.x, a.y, b.y, w, true) : snapped_bar(a.y, a.x, b.x, w, false);
       const Rgba ink = w < f ? full : c;
       for (const Vec2 v : {Vec2{bar.x0, bar.y0}, Vec2{bar.x1, bar.y0}, Vec2{bar.x1, bar.y1},
                            Vec2{bar.x0, bar.y0}, Vec2{bar.x1, bar.y1}, Vec2{bar.x0, bar.y1}}) {

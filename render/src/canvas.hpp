@@ -107,7 +107,7 @@ class Canvas {
   GlApi gl_;
   int width_ = 0, height_ = 0, supersample_ = 1;
   bool blending_ = false;
-  std::array<unsigned, 2> textures_{};  // one 1D texture per Colormap, made on first use
+  std::array<unsigned, 2> textures_{};      // one 1D texture per Colormap, made on first use
   std::map<int, unsigned> glyph_textures_;  // glyph atlas per pixel size, made on first use
   // Scratch buffers kept between frames: no allocation per frame once they have grown.
   std::vector<std::uint8_t> framebuffer_;  // supersampled read-back

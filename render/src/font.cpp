@@ -16,15 +16,15 @@ FT_Face face(void* p) { return static_cast<FT_Face>(p); }
 
 std::vector<char32_t> make_charset() {
   std::vector<char32_t> cs;
-  for (char32_t c = 0x20; c <= 0x7E; ++c) cs.push_back(c);   // ASCII
-  for (char32_t c = 0xA0; c <= 0xFF; ++c) cs.push_back(c);   // Latin-1: degree, micro, ...
-  for (char32_t c = 0x391; c <= 0x3C9; ++c) {                // Greek
+  for (char32_t c = 0x20; c <= 0x7E; ++c) cs.push_back(c);  // ASCII
+  for (char32_t c = 0xA0; c <= 0xFF; ++c) cs.push_back(c);  // Latin-1: degree, micro, ...
+  for (char32_t c = 0x391; c <= 0x3C9; ++c) {               // Greek
     if (c != 0x3A2) cs.push_back(c);
   }
   for (char32_t c = 0x2070; c <= 0x2089; ++c) cs.push_back(c);  // super- and subscripts
-  for (char32_t c : {0x2013, 0x2014, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022, 0x2026, 0x2032,
-                     0x2190, 0x2191, 0x2192, 0x2193, 0x2202, 0x2207, 0x2212, 0x221A, 0x221E,
-                     0x2248, 0x2260, 0x2264, 0x2265, 0xFFFD}) {
+  for (char32_t c : {0x2013, 0x2014, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022, 0x2026,
+                     0x2032, 0x2190, 0x2191, 0x2192, 0x2193, 0x2202, 0x2207, 0x2212,
+                     0x221A, 0x221E, 0x2248, 0x2260, 0x2264, 0x2265, 0xFFFD}) {
     cs.push_back(c);
   }
   return cs;

@@ -17,9 +17,9 @@ inline constexpr const char* default_font_file = "/usr/share/fonts/truetype/deja
 
 /// One glyph as 8-bit coverage (0 = paper, 255 = ink), rows top first.
 struct GlyphBitmap {
-  int width = 0, height = 0;  ///< [px]
-  int left = 0;               ///< pen position to the bitmap's left edge [px]
-  int top = 0;                ///< baseline up to the bitmap's top row [px]
+  int width = 0, height = 0;           ///< [px]
+  int left = 0;                        ///< pen position to the bitmap's left edge [px]
+  int top = 0;                         ///< baseline up to the bitmap's top row [px]
   std::vector<std::uint8_t> coverage;  ///< width * height
 };
 

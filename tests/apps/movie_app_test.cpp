@@ -122,7 +122,8 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   EXPECT_EQ(fsi::fingerprint(fsi::load_scenario(out / "scenario.json")),
             summary["scenario"]["fingerprint"].get<std::string>());
   const std::string outputs = summary["outputs"].dump();
-  for (const char* f : {"functionals.csv", "scenario.json", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
+  for (const char* f :
+       {"functionals.csv", "scenario.json", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
     EXPECT_NE(outputs.find(f), std::string::npos) << f;
   }
 }
@@ -132,12 +133,14 @@ TEST(MovieApp, FramesComeEveryFrameIntervalOfSimulatedTime) {
   // the step-length controller starts there): a frame every frame_every x k = 0.02 s of
   // simulated time is one every 2k step, not every second step.
   const fs::path out = fresh_dir("long_steps");
-  const pid_t pid = start_movie({kScenario.string(), out.string(), "--frame-every", "2", "--set",
-                                 "/numerics/time_step_max_s=0.02", "--no-video", "--no-vtu", "--quiet"},
-                                out.string() + ".log");
+  const pid_t pid =
+      start_movie({kScenario.string(), out.string(), "--frame-every", "2", "--set",
+                   "/numerics/time_step_max_s=0.02", "--no-video", "--no-vtu", "--quiet"},
+                  out.string() + ".log");
   ASSERT_EQ(wait_exit_code(pid), 0) << read_text(out.string() + ".log");
   std::vector<std::string> frames;
-  for (const auto& e : fs::directory_iterator(out / "frames")) frames.push_back(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(out / "frames"))
+    frames.push_back(e.path().filename().string());
   std::sort(frames.begin(), frames.end());
   const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
   EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.1, 1e-9);
@@ -182,8 +185,9 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
 
   // A finished run can be extended: the end time is not part of the fingerprint.
   const fs::path extended = fresh_dir("extended");
-  args = {kScenario.string(), extended.string(), "--end-time", "0.12", "--resume",
-          (full / "checkpoints/step_000008.ckpt").string()};
+  args = {kScenario.string(), extended.string(),
+          "--end-time",       "0.12",
+          "--resume",         (full / "checkpoints/step_000008.ckpt").string()};
   args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
   ASSERT_EQ(wait_exit_code(start_movie(args, extended.string() + ".log")), 0)
       << read_text(extended.string() + ".log");
@@ -193,8 +197,9 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
   EXPECT_EQ(c[2], a[10]);
 
   // A checkpoint of another scenario is refused with a message, not run.
-  args = {kScenario.string(), resumed.string(), "--set", "/solid/mu_pa=4e5", "--resume",
-          (full / "checkpoints/step_000004.ckpt").string(), "--quiet"};
+  args = {kScenario.string(), resumed.string(), "--set",
+          "/solid/mu_pa=4e5", "--resume",       (full / "checkpoints/step_000004.ckpt").string(),
+          "--quiet"};
   EXPECT_EQ(wait_exit_code(start_movie(args, resumed.string() + ".log")), 2);
   EXPECT_NE(read_text(resumed.string() + ".log").find("step_000004.ckpt"), std::string::npos);
 }
@@ -272,9 +277,9 @@ int coloured_pixels_in_centre_column(const fs::path& png) {
 TEST(MovieApp, StretchLetsAThinZoomFillThePicture) {
   // 1 m wide, 5 cm high: with the aspect kept a strip of a few pixels.
   const fs::path kept = fresh_dir("zoom_kept"), stretched = fresh_dir("zoom_stretched");
-  std::vector<std::string> args{kScenario.string(), kept.string(), "--end-time", "0.01",
-                                "--zoom", "-0.5,-0.75,0.5,-0.7", "--field", "vmag",
-                                "--no-video", "--no-vtu", "--quiet"};
+  std::vector<std::string> args{
+      kScenario.string(), kept.string(), "--end-time", "0.01",     "--zoom", "-0.5,-0.75,0.5,-0.7",
+      "--field",          "vmag",        "--no-video", "--no-vtu", "--quiet"};
   ASSERT_EQ(wait_exit_code(start_movie(args, kept.string() + ".log")), 0)
       << read_text(kept.string() + ".log");
   args[1] = stretched.string();
@@ -288,13 +293,51 @@ TEST(MovieApp, StretchLetsAThinZoomFillThePicture) {
   EXPECT_GT(filled, 120) << "of 240 rows (the rest: title, axes)";
 }
 
+TEST(MovieApp, SecondFieldAndFilmInsetOptions) {
+  // Velocity and pressure side by side (the film inset is absent while the ball is far
+  // from the floor), and a video-only run that writes no PNG at all.
+  const fs::path two = fresh_dir("two_panels"), video_only = fresh_dir("video_only");
+  ASSERT_EQ(wait_exit_code(start_movie(
+                {kScenario.string(), two.string(), "--end-time", "0.01", "--second-field", "p",
+                 "--film-inset", "--no-video", "--no-vtu", "--quiet"},
+                two.string() + ".log")),
+            0)
+      << read_text(two.string() + ".log");
+  const fsi::render::Image im = fsi::render::read_png(two / "frames/frame_000000.png");
+  EXPECT_EQ(im.width, 320);
+  // Both halves hold a colour bar: strongly coloured pixels on either side.
+  int left = 0, right = 0;
+  for (int y = 0; y < im.height; ++y) {
+    for (int x = 0; x < im.width; ++x) {
+      const std::uint8_t* p = &im.rgba[im.offset(x, y)];
+      const bool colour = std::abs(int(p[0]) - int(p[2])) > 80;
+      (x < im.width / 2 ? left : right) += colour;
+    }
+  }
+  EXPECT_GT(left, 100);
+  EXPECT_GT(right, 100);
+  EXPECT_EQ(wait_exit_code(
+                start_movie({kScenario.string(), two.string() + "_bad", "--second-field", "speed"},
+                            two.string() + "_bad.log")),
+            2);
+#ifdef FSI_RENDER_HAS_VIDEO
+  ASSERT_EQ(wait_exit_code(start_movie({kScenario.string(), video_only.string(), "--end-time",
+                                        "0.02", "--no-png", "--no-vtu", "--quiet"},
+                                       video_only.string() + ".log")),
+            0)
+      << read_text(video_only.string() + ".log");
+  EXPECT_FALSE(fs::exists(video_only / "frames"));
+  EXPECT_GT(fsi::render::probe_video(video_only / "movie.mp4").frames, 0);
+#endif
+}
+
 TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   const fs::path out = fresh_dir("interrupted");
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = start_movie({kScenario.string(), out.string(), "--end-time", "5",
-                                 "--frame-every", "2", "--size", "320x240", "--no-vtu",
-                                 "--checkpoint-every", "100000"},
-                                out.string() + ".log");
+  const pid_t pid =
+      start_movie({kScenario.string(), out.string(), "--end-time", "5", "--frame-every", "2",
+                   "--size", "320x240", "--no-vtu", "--checkpoint-every", "100000"},
+                  out.string() + ".log");
   // The first frame's summary says the run is under way; then let it go on a little.
   while (!fs::exists(out / "summary.json") &&
          std::chrono::steady_clock::now() - start < std::chrono::seconds(20)) {

@@ -2,6 +2,7 @@
 // of the colouring that must hold whatever the goldens say.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fsi/colormap.hpp>
 #include <fsi/renderer.hpp>
@@ -60,6 +61,53 @@ TEST_F(FieldFrame, ColorBarAloneGolden) {
   s.show_axes = false;
   s.show_time = false;
   testing::expect_matches_golden("colorbar_cool_warm", renderer.render(view, s));
+}
+
+TEST_F(FieldFrame, TwoPanelsWithFilmInsetGolden) {
+  // Velocity and pressure side by side, each with the film under the ball (4.3 cm gap,
+  // under half the radius) magnified in its upper right corner.
+  SampleFieldOptions o;
+  o.ball_y = -0.657;
+  const FieldView near_floor = sample_field_view(o);
+  FrameSpec s = small_frame(Quantity::vy);
+  s.width = 480;
+  s.second_quantity = Quantity::p;
+  s.inset = film_window(near_floor);
+  ASSERT_TRUE(s.inset);
+  testing::expect_matches_golden("field_two_panels_inset", renderer.render(near_floor, s));
+}
+
+TEST_F(FieldFrame, FilmWindowSpansTheGapUnderTheBody) {
+  SampleFieldOptions o;  // radius 0.3 m, floor at y = -1
+  o.ball_y = -0.69;      // lowest point -0.99: a 1 cm film
+  const FieldView v = sample_field_view(o);
+  const auto w = film_window(v);
+  ASSERT_TRUE(w);
+  double lowest = 1e9;
+  for (const auto& sg : v.interface) lowest = std::min({lowest, sg.a.y, sg.b.y});
+  const double gap = lowest + 1.0;
+  EXPECT_LT(w->y0, -1.0);                         // the floor inside
+  EXPECT_NEAR(w->y1, lowest + 0.6 * gap, 1e-12);  // and a little of the ball
+  EXPECT_LT(w->x0, o.ball_x - 0.2);               // the lower part of the ball's width
+  EXPECT_GT(w->x1, o.ball_x + 0.2);
+  o.ball_y = -0.3;  // 40 cm up: no film to show
+  EXPECT_FALSE(film_window(sample_field_view(o)));
+  FieldView none = v;
+  none.interface.clear();
+  EXPECT_FALSE(film_window(none));
+}
+
+TEST_F(FieldFrame, ReusedImageMatchesAFreshOne) {
+  // A movie renders into one Image frame after frame; a size change in between and
+  // back must leave nothing of the other size behind.
+  FrameSpec s = small_frame(Quantity::vmag);
+  Image reused;
+  renderer.render(view, s, reused);
+  s.width = 200;
+  renderer.render(view, s, reused);
+  s.width = 320;
+  renderer.render(view, s, reused);
+  EXPECT_TRUE(compare_images(renderer.render(view, s), reused, 0, 0.0).same);
 }
 
 // The scalar is interpolated before the colour lookup: along a linear field every pixel
@@ -138,7 +186,11 @@ TEST_F(FieldFrame, OutputHasRequestedSizeAndIsOpaque) {
   ASSERT_EQ(im.height, 201);
   // Top-left corner is background white: the picture is not upside down or black.
   EXPECT_EQ(im.rgba[0], 255);
-  EXPECT_EQ(im.rgba[3], 255);
+  // Every pixel opaque, the antialiased edges of lines and text too (blending must not
+  // lower the alpha of the paper under them).
+  int translucent = 0;
+  for (std::size_t i = 3; i < im.rgba.size(); i += 4) translucent += im.rgba[i] != 255;
+  EXPECT_EQ(translucent, 0);
 }
 
 TEST_F(FieldFrame, ALongTitleStaysInsideThePicture) {

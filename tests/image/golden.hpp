@@ -38,7 +38,7 @@ inline bool updating_goldens() {
 inline void expect_matches_golden(const std::string& name, const Image& actual) {
   const auto golden = golden_path(name);
   if (updating_goldens()) {
-    write_png(golden, actual, 9);
+    write_png(golden, actual, 12);  // smallest: goldens are kept in the repository
     std::printf("updated golden %s\n", golden.c_str());
     return;
   }

@@ -48,11 +48,27 @@ struct FrameSpec {
   std::string title;      ///< top centre; empty = none
   /// Text size factor; 0 = automatic from the picture height (legible at any size).
   double text_scale = 0;
+  /// A second quantity in a panel of its own right of the first (e.g. velocity and
+  /// pressure side by side), with its own colour bar; unset = one panel.
+  std::optional<Quantity> second_quantity;
+  /// Fixed colour range of the second panel; unset = auto_range() of this frame.
+  std::optional<ColorRange> second_range;
+  /// A magnified inset of this window [m] in the upper right corner of each panel,
+  /// stretched to the inset's box (x and y scaled apart: a film 1 mm high under a ball
+  /// becomes visible), its outline marked in the panel. See film_window().
+  std::optional<ViewWindow> inset;
   /// Supersampling factor per direction (1..4). Lines and text are antialiased at 1
   /// already; 2 also smooths the edges of the coloured field (the ball's rim under its
   /// contour line), at ~4x the fill work.
   int supersample = 1;
 };
+
+/// The film under the body, for FrameSpec::inset: from just below the floor (the
+/// domain's bottom) to 0.6 gap above the interface's lowest point, as wide as the body
+/// is within 0.6 radius above that point (plus 5 % each side). Its height follows the
+/// gap, so the inset magnifies more as the body comes down. Unset when the view has no
+/// interface or the gap is wider than half the body's radius (no film to show yet).
+std::optional<ViewWindow> film_window(const FieldView& view);
 
 class Renderer {
  public:
