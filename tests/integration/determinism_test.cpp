@@ -50,6 +50,33 @@ TEST(Determinism, RestoredStateContinuesBitIdenticallyWithLongerSteps) {
   expect_restored_state_continues_bit_identically(s, 1, 3);
 }
 
+TEST(Determinism, RestoredStateContinuesBitIdenticallyWithErrorControlAndThreeThreads) {
+  // The error-controlled step limit is part of the state (time_step_limit_s); the element
+  // loops on three threads sum in the fixed colour order.
+  fsi::Scenario s = fsi::testing::coarse_example1();
+  s.numerics.time_step_s = 5e-3;
+  s.numerics.time_step_max_s = 2e-2;
+  s.numerics.time_error_tolerance_m = 1e-6;
+  s.numerics.assembly_threads = 3;
+  expect_restored_state_continues_bit_identically(s, 3, 3);
+}
+
+TEST(Determinism, AssemblyThreadsGiveTheSameBits) {
+  fsi::Scenario s = fsi::testing::coarse_example1();
+  s.numerics.assembly_threads = 1;
+  fsi::Engine one(s);
+  s.numerics.assembly_threads = 3;
+  fsi::Engine three(s);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(one.step().converged);
+    ASSERT_TRUE(three.step().converged);
+  }
+  const Eigen::VectorXd& x = one.state().solution;
+  const Eigen::VectorXd& y = three.state().solution;
+  ASSERT_EQ(x.size(), y.size());
+  EXPECT_EQ(0, std::memcmp(x.data(), y.data(), sizeof(double) * x.size())) << "max diff " << (x - y).cwiseAbs().maxCoeff();
+}
+
 TEST(Determinism, RestoredStateContinuesBitIdenticallyWithGmres) {
   // With GMRES the norm's row scale comes from each step's own start, so only the
   // factorization (the preconditioner) has to be restored.
