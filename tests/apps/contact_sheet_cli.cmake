@@ -1,5 +1,6 @@
-# Runs fsi-contact-sheet on goldens (as files and as a folder of them) and on bad input (frames of two sizes, a missing file, a bad --grid, no
-# frames), checking exit codes (0 written, 2 bad input) and the sheet's size.
+# Runs fsi-contact-sheet on goldens (as files and as a folder of them) and on bad
+# input (frames of two sizes, a missing file, a bad --grid, no frames), checking exit
+# codes (0 written, 2 bad input) and the sheet's size.
 set(_g ${SOURCE_DIR}/tests/golden)
 set(_out ${BINARY_DIR}/image-test-output/contact-sheet.png)
 set(_frames ${_g}/field_vy_contour.png ${_g}/field_vmag_mesh.png ${_g}/field_p_fixed_range.png
