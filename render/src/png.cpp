@@ -1,6 +1,7 @@
-// PNG writing with libdeflate (whole-buffer DEFLATE, several times faster than zlib at
-// its fast levels: see encode_png's comment), reading through libpng's simplified API
-// (png_image_*), which handles every colour type and bit depth.
+// PNG writing with libdeflate (whole-buffer DEFLATE: on a 1280x720 field frame 1.6x as
+// fast as libpng with zlib level 1, for a smaller file; numbers in png.hpp), reading
+// through libpng's simplified API (png_image_*), which handles every colour type and
+// bit depth.
 #include "fsi/png.hpp"
 
 #include <libdeflate.h>
