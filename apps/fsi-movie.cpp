@@ -32,9 +32,9 @@
 //   fsi-movie assets/scenarios/ball_drop.json out/drop --field p --end-time 1 --no-vtu
 //   fsi-movie assets/scenarios/ball_drop.json out/k1e-3 --set /numerics/time_step_s=1e-3
 //   fsi-movie assets/scenarios/contact/d0_1e-3_g800.json out/gap --zoom -0.3,-1,0.3,-0.9 --mesh
-//   fsi-movie assets/scenarios/ball_drop.json out/film --zoom -0.4,-1,0.4,-0.995 --stretch --field
-//   p fsi-movie assets/scenarios/ball_drop.json out/talk --second-field p --film-inset fsi-movie
-//   assets/scenarios/ball_drop.json out/late --resume out/drop/checkpoints/step_002300.ckpt
+//   fsi-movie assets/scenarios/ball_drop.json out/film --zoom -0.4,-1,0.4,-0.995 --stretch --field p
+//   fsi-movie assets/scenarios/ball_drop.json out/talk --second-field p --film-inset
+//   fsi-movie assets/scenarios/ball_drop.json out/late --resume out/drop/checkpoints/step_002300.ckpt
 #include <cstdio>
 #include <exception>
 #include <filesystem>

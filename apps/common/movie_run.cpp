@@ -4,11 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <fsi/engine.hpp>
 #include <fsi/error.hpp>
 #include <fsi/output.hpp>
 #include <fsi/png.hpp>
-#include <fstream>
 #include <memory>
 #include <optional>
 #ifdef FSI_RENDER_HAS_VIDEO
@@ -32,14 +32,14 @@ namespace fs = std::filesystem;
 /// spending hours on it. Normal runs stay below 1e-2.
 constexpr double kLostBodyMassError = 0.5;
 
+
 class MovieRun {
  public:
   MovieRun(const Scenario& scenario, const MovieOptions& options)
       : options_(options),
         engine_(scenario),
         summary_(scenario),
-        earlier_(options.continue_run ? std::optional(read_earlier_run(options.out_dir))
-                                      : std::nullopt),
+        earlier_(options.continue_run ? std::optional(read_earlier_run(options.out_dir)) : std::nullopt),
         csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true,
              earlier_ ? earlier_->csv_rows : std::vector<std::string>{}),
         pvd_(options.out_dir / "vtk" / "frames.pvd"),
@@ -131,10 +131,9 @@ class MovieRun {
       history_.add(st.time_s, st.functionals);
       if (!(st.functionals.mass_error <= kLostBodyMassError)) {
         char why[160];
-        std::snprintf(
-            why, sizeof why,
-            "the body degenerated at t = %.6g s (relative mass error %.3g > %.2g): stopped",
-            st.time_s, st.functionals.mass_error, kLostBodyMassError);
+        std::snprintf(why, sizeof why,
+                      "the body degenerated at t = %.6g s (relative mass error %.3g > %.2g): stopped",
+                      st.time_s, st.functionals.mass_error, kLostBodyMassError);
         meter_.note(std::string("fsi-movie: ") + why);
         summary_.set_stop_reason(why);
         break;
@@ -149,8 +148,7 @@ class MovieRun {
     }
     // A killed study run then continues where it stopped instead of up to
     // checkpoint_every steps (hours, for the stairs) earlier.
-    if (resumable_stop && options_.checkpoint_every > 0 &&
-        engine_.state().step != last_checkpoint_step_)
+    if (resumable_stop && options_.checkpoint_every > 0 && engine_.state().step != last_checkpoint_step_)
       write_checkpoint(engine_.state().step);
     if (engine_.state().step != last_frame_step_) write_frame();  // the last state, always
     meter_.finish();

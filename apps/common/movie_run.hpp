@@ -24,7 +24,7 @@ struct MovieOptions {
   /// The picture: size, field, mesh overlay, frame rate and frame_every come from the
   /// scenario's output section (the app's options override it there).
   std::optional<render::ViewWindow> zoom;  ///< unset: the whole domain
-  bool stretch = false;                    ///< the window fills the picture (x, y scaled apart)
+  bool stretch = false;  ///< the window fills the picture (x, y scaled apart)
   /// A second field in a panel right of the first (e.g. p next to the velocity), with
   /// its own fixed colour range (movie_color_range.hpp); unset = one panel.
   std::optional<render::Quantity> second_field;

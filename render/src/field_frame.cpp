@@ -119,6 +119,7 @@ struct Panel {
   Rect area;  // the field
   Rect bar;   // the colour bar (when shown)
   AxisMap mx, my;
+  bool axis_labels = true;  // y tick labels, "y [m]" and "x [m]": on the first panel only
 };
 
 // Widths around a panel's field area [logical px]: y labels on the left, colour bar
@@ -128,10 +129,11 @@ struct Margins {
 };
 
 Margins panel_margins(const FrameSpec& spec, const ViewWindow& w, const ColorRange& range,
-                      std::string_view label, float s, float guess_h) {
+                      std::string_view label, bool axis_labels, float s, float guess_h) {
   const float ch = Canvas::text_height(s), pad = 0.8f * ch;
   Margins m{pad, pad};
-  if (spec.show_axes) {
+  if (spec.show_axes && !axis_labels) m.left += 1.0f * ch;  // the tick marks
+  if (spec.show_axes && axis_labels) {
     const AxisTicks yt = make_ticks(AxisMap{w.y0, w.y1, guess_h, 0}, guess_h, y_tick_spacing(s));
     // rotated "y [m]" (ch tall), a gap, the tick labels, the tick and its gap; at least
     // room for "x [m]" before the first x tick label (half of which may stick out left)
@@ -153,28 +155,39 @@ Rect colorbar_box(const Rect& area, float ch) {
   return {area.x1 + 1.5f * ch, area.y0 + 0.75f * ch, area.x1 + 2.8f * ch, area.y1};
 }
 
-// Lays out a panel of `region`'s width between `top` and `bottom`: the field area as
-// large as fits (keeping the window's aspect if asked), centred with its margins.
-Panel layout_panel(const FrameSpec& spec, const ViewWindow& w, Quantity q, const ColorRange& range,
-                   float x0, float x1, float top, float bottom, float s) {
+// Lays the panels out side by side between `top` and `bottom`: field areas of one size
+// (the window's aspect kept if asked), as large as the picture allows with every
+// panel's margins, the row of them centred.
+std::vector<Panel> layout_panels(const FrameSpec& spec, const ViewWindow& w,
+                                 const std::vector<std::pair<Quantity, ColorRange>>& panels,
+                                 float top, float bottom, float s) {
   const float ch = Canvas::text_height(s);
-  const Margins m = panel_margins(spec, w, range, quantity_info(q).label, s, bottom - top);
-  const Rect avail{x0 + m.left, top, x1 - m.right, bottom};
-  if (avail.width() < 10 || avail.height() < 10) {
-    throw std::invalid_argument("FrameSpec: picture too small for its labels");
+  std::vector<Margins> margins;
+  float margin_sum = 0;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    margins.push_back(panel_margins(spec, w, panels[i].second, quantity_info(panels[i].first).label,
+                                    i == 0, s, bottom - top));
+    margin_sum += margins.back().left + margins.back().right;
   }
-  Rect area = avail;
+  const float n = float(panels.size());
+  float aw = (float(spec.width) - margin_sum) / n, ah = bottom - top;
+  if (aw < 10 || ah < 10) throw std::invalid_argument("FrameSpec: picture too small for its labels");
   if (spec.keep_aspect) {
-    const double ppm = std::min(avail.width() / (w.x1 - w.x0), avail.height() / (w.y1 - w.y0));
-    const float aw = float(ppm * (w.x1 - w.x0)), ah = float(ppm * (w.y1 - w.y0));
-    // Centre the field area and its margins together.
-    const float ax = x0 + m.left + (avail.width() - aw) / 2,
-                ay = avail.y0 + (avail.height() - ah) / 2;
-    area = {ax, ay, ax + aw, ay + ah};
+    const double ppm = std::min(aw / (w.x1 - w.x0), ah / (w.y1 - w.y0));
+    aw = float(ppm * (w.x1 - w.x0));
+    ah = float(ppm * (w.y1 - w.y0));
   }
-  Panel p{q, range, area, {}, {w.x0, w.x1, area.x0, area.x1}, {w.y0, w.y1, area.y1, area.y0}};
-  p.bar = colorbar_box(area, ch);
-  return p;
+  float x = (float(spec.width) - margin_sum - n * aw) / 2;
+  const float y = top + (bottom - top - ah) / 2;
+  std::vector<Panel> laid;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const Rect area{x + margins[i].left, y, x + margins[i].left + aw, y + ah};
+    laid.push_back({panels[i].first, panels[i].second, area, colorbar_box(area, ch),
+                    AxisMap{w.x0, w.x1, area.x0, area.x1}, AxisMap{w.y0, w.y1, area.y1, area.y0},
+                    i == 0});
+    x = area.x1 + margins[i].right;
+  }
+  return laid;
 }
 
 // The inset's box in the upper right corner of `area`: 45 % of its width, 2:1.
@@ -226,19 +239,25 @@ void draw_panel(Canvas& c, const FieldView& view, const FrameSpec& spec, const P
   c.stroke_rect(p.area, std::max(1.0f, 0.6f * s), ink);
   if (spec.show_axes) {
     const AxisTicks xt = make_ticks(p.mx, p.area.width(), x_tick_spacing(s));
-    const AxisTicks yt = make_ticks(p.my, p.area.height(), y_tick_spacing(s));
+    AxisTicks yt = make_ticks(p.my, p.area.height(), y_tick_spacing(s));
     draw_ticks(c, p.area, p.mx, xt, s, Side::bottom);
-    draw_ticks(c, p.area, p.my, yt, s, Side::left);
-    // "x [m]" opens the row of tick labels (its own row below them would cost the field
-    // a line of height): right-aligned a capital height before the first label.
-    float first_label = p.area.x0;
-    if (!xt.values.empty()) {
-      first_label = std::min(first_label, p.mx(xt.values.front()) -
-                                              Canvas::text_width(xt.labels.front(), s) / 2);
+    if (!p.axis_labels) {
+      // A second panel shows the first one's window: its y ticks as marks only.
+      for (std::string& l : yt.labels) l.clear();
+      draw_ticks(c, p.area, p.my, yt, s, Side::left);
+    } else {
+      draw_ticks(c, p.area, p.my, yt, s, Side::left);
+      // "x [m]" opens the row of tick labels (its own row below them would cost the
+      // field a line of height): right-aligned a capital height before the first label.
+      float first_label = p.area.x0;
+      if (!xt.values.empty()) {
+        first_label = std::min(first_label, p.mx(xt.values.front()) -
+                                                Canvas::text_width(xt.labels.front(), s) / 2);
+      }
+      c.text("x [m]", first_label - 1.0f * ch, p.area.y1 + 1.0f * ch, s, ink, Align::end);
+      c.text("y [m]", p.area.x0 - 1.8f * ch - max_label_width(yt, s), (p.area.y0 + p.area.y1) / 2,
+             s, ink, Align::centre, Align::end, true);
     }
-    c.text("x [m]", first_label - 1.0f * ch, p.area.y1 + 1.0f * ch, s, ink, Align::end);
-    c.text("y [m]", p.area.x0 - 1.8f * ch - max_label_width(yt, s), (p.area.y0 + p.area.y1) / 2, s,
-           ink, Align::centre, Align::end, true);
   }
   if (spec.show_colorbar) {
     const AxisTicks ct = make_ticks(AxisMap{p.range.lo, p.range.hi, p.bar.y1, p.bar.y0},
@@ -312,27 +331,7 @@ void draw_field_frame(Canvas& c, const FieldView& view, const FrameSpec& spec, I
   const float title_cap = Canvas::text_height(s + 0.5f);
   const float top = top_row ? 0.5f * ch + title_cap + text_row_gap * ch : pad;
   const float bottom = spec.height - (spec.show_axes ? 2.9f * ch : pad);
-  std::vector<Panel> laid;
-  const float share = float(spec.width) / float(panels.size());
-  for (std::size_t i = 0; i < panels.size(); ++i) {
-    laid.push_back(layout_panel(spec, w, panels[i].first, panels[i].second, share * float(i),
-                                share * float(i + 1), top, bottom, s));
-  }
-  if (spec.keep_aspect && laid.size() > 1) {
-    // Side by side panels as large as the smallest (their colour bars' labels differ in
-    // width), each shrunk about its centre: one scale for both.
-    float w_min = INFINITY;
-    for (const Panel& p : laid) w_min = std::min(w_min, p.area.width());
-    for (Panel& p : laid) {
-      const float k = w_min / p.area.width(), cx = (p.area.x0 + p.area.x1) / 2,
-                  cy = (p.area.y0 + p.area.y1) / 2;
-      const float hw = p.area.width() * k / 2, hh = p.area.height() * k / 2;
-      p.area = {cx - hw, cy - hh, cx + hw, cy + hh};
-      p.mx = {w.x0, w.x1, p.area.x0, p.area.x1};
-      p.my = {w.y0, w.y1, p.area.y1, p.area.y0};
-      p.bar = colorbar_box(p.area, ch);
-    }
-  }
+  const std::vector<Panel> laid = layout_panels(spec, w, panels, top, bottom, s);
   for (const Panel& p : laid) draw_panel(c, view, spec, p, s);
 
   const Rect& first = laid.front().area;

@@ -12,16 +12,36 @@
 namespace fsi::render::detail {
 
 // X-macro list: one line per function, so the member and its loading stay in sync.
-#define FSI_GL_FUNCTIONS(X)                                                                        \
-  X(glBindTexture)                                                                                 \
-  X(glBlendFunc) X(glBlendFuncSeparate)                                                                                   \
-  X(glClear)                                                                                       \
-  X(glClearColor) X(glColor4ub) X(glColorMask) X(glColorPointer) X(glDeleteTextures) X(glDisable)                 \
-      X(glDisableClientState) X(glDrawArrays) X(glDrawElements) X(glEnable) X(glEnableClientState) \
-          X(glFinish) X(glGenTextures) X(glGetError) X(glGetString) X(glLoadIdentity)              \
-              X(glMatrixMode) X(glOrtho) X(glPixelStorei) X(glReadPixels) X(glScissor)             \
-                  X(glTexCoordPointer) X(glTexEnvi) X(glTexImage1D) X(glTexImage2D)                \
-                      X(glTexParameteri) X(glVertexPointer) X(glViewport)
+#define FSI_GL_FUNCTIONS(X)  \
+  X(glBindTexture)           \
+  X(glBlendFuncSeparate)     \
+  X(glClear)                 \
+  X(glClearColor)            \
+  X(glColor4ub)              \
+  X(glColorPointer)          \
+  X(glDeleteTextures)        \
+  X(glDisable)               \
+  X(glDisableClientState)    \
+  X(glDrawArrays)            \
+  X(glDrawElements)          \
+  X(glEnable)                \
+  X(glEnableClientState)     \
+  X(glGenTextures)           \
+  X(glGetError)              \
+  X(glGetString)             \
+  X(glLoadIdentity)          \
+  X(glMatrixMode)            \
+  X(glOrtho)                 \
+  X(glPixelStorei)           \
+  X(glReadPixels)            \
+  X(glScissor)               \
+  X(glTexCoordPointer)       \
+  X(glTexEnvi)               \
+  X(glTexImage1D)            \
+  X(glTexImage2D)            \
+  X(glTexParameteri)         \
+  X(glVertexPointer)         \
+  X(glViewport)
 
 struct GlApi {
 #define FSI_GL_MEMBER(name) decltype(&::name) name = nullptr;

@@ -35,7 +35,8 @@ class GlyphAtlas {
 };
 
 /// The atlas of default_font() at `pixel_size`, made on first request and kept for the
-/// life of the process (one per size; a movie uses two or three sizes). Thread-safe.
+/// life of the process (one per size; a field frame uses up to four: labels, title,
+/// subscripts, the inset's tag). Thread-safe.
 const GlyphAtlas& glyph_atlas(int pixel_size);
 
 }  // namespace fsi::render::detail

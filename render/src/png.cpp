@@ -1,6 +1,7 @@
-// PNG writing with libdeflate (whole-buffer DEFLATE, several times faster than zlib at
-// its fast levels: see encode_png's comment), reading through libpng's simplified API
-// (png_image_*), which handles every colour type and bit depth.
+// PNG writing with libdeflate (whole-buffer DEFLATE: on a 1280x720 field frame 1.6x as
+// fast as libpng with zlib level 1, for a smaller file; numbers in png.hpp), reading
+// through libpng's simplified API (png_image_*), which handles every colour type and
+// bit depth.
 #include "fsi/png.hpp"
 
 #include <libdeflate.h>
@@ -70,8 +71,8 @@ std::size_t encode(const Image& image, int compression_level, std::vector<std::u
   if (!compressor) compressor.reset(libdeflate_alloc_compressor(level));
   if (!compressor) throw std::runtime_error("encode_png: libdeflate_alloc_compressor failed");
 
-  // Rows with filter type 0 (none): on these flat-shaded pictures the adaptive filters
-  // shrink the file by a fifth but cost more than the compression itself.
+  // Rows with filter type 0 (none): on a 1280x720 field frame at level 4 the Sub and Up
+  // filters made the file larger (130 and 129 KB against 116 KB) and slower to write.
   const bool rgb = opaque(image);
   const std::size_t channels = rgb ? 3 : 4, w = std::size_t(image.width);
   const std::size_t row = 1 + channels * w;
@@ -84,9 +85,8 @@ std::size_t encode(const Image& image, int compression_level, std::vector<std::u
     const std::uint8_t* p = image.rgba.data() + image.offset(0, y);
     *d++ = 0;
     if (rgb) {
-      // Whole pixels copied, each overwriting the alpha of the one before: about twice
-      // as fast as byte by byte. The last one spills into the next row's filter byte,
-      // written after it.
+      // Whole pixels copied (4 bytes), each overwriting the alpha of the one before; the
+      // last one spills into the next row's filter byte, written after it.
       for (std::size_t x = 0; x < w; ++x, d += 3, p += 4) std::memcpy(d, p, 4);
     } else {
       std::memcpy(d, p, 4 * w);

@@ -122,8 +122,7 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
   EXPECT_EQ(fsi::fingerprint(fsi::load_scenario(out / "scenario.json")),
             summary["scenario"]["fingerprint"].get<std::string>());
   const std::string outputs = summary["outputs"].dump();
-  for (const char* f :
-       {"functionals.csv", "scenario.json", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
+  for (const char* f : {"functionals.csv", "scenario.json", "frames", "vtk/frames.pvd", "plot_mass.png"}) {
     EXPECT_NE(outputs.find(f), std::string::npos) << f;
   }
 }
@@ -133,14 +132,12 @@ TEST(MovieApp, FramesComeEveryFrameIntervalOfSimulatedTime) {
   // the step-length controller starts there): a frame every frame_every x k = 0.02 s of
   // simulated time is one every 2k step, not every second step.
   const fs::path out = fresh_dir("long_steps");
-  const pid_t pid =
-      start_movie({kScenario.string(), out.string(), "--frame-every", "2", "--set",
-                   "/numerics/time_step_max_s=0.02", "--no-video", "--no-vtu", "--quiet"},
-                  out.string() + ".log");
+  const pid_t pid = start_movie({kScenario.string(), out.string(), "--frame-every", "2", "--set",
+                                 "/numerics/time_step_max_s=0.02", "--no-video", "--no-vtu", "--quiet"},
+                                out.string() + ".log");
   ASSERT_EQ(wait_exit_code(pid), 0) << read_text(out.string() + ".log");
   std::vector<std::string> frames;
-  for (const auto& e : fs::directory_iterator(out / "frames"))
-    frames.push_back(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(out / "frames")) frames.push_back(e.path().filename().string());
   std::sort(frames.begin(), frames.end());
   const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
   EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.1, 1e-9);
@@ -185,9 +182,8 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
 
   // A finished run can be extended: the end time is not part of the fingerprint.
   const fs::path extended = fresh_dir("extended");
-  args = {kScenario.string(), extended.string(),
-          "--end-time",       "0.12",
-          "--resume",         (full / "checkpoints/step_000008.ckpt").string()};
+  args = {kScenario.string(), extended.string(), "--end-time", "0.12", "--resume",
+          (full / "checkpoints/step_000008.ckpt").string()};
   args.insert(args.end(), quiet_csv.begin(), quiet_csv.end());
   ASSERT_EQ(wait_exit_code(start_movie(args, extended.string() + ".log")), 0)
       << read_text(extended.string() + ".log");
@@ -197,9 +193,8 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
   EXPECT_EQ(c[2], a[10]);
 
   // A checkpoint of another scenario is refused with a message, not run.
-  args = {kScenario.string(), resumed.string(), "--set",
-          "/solid/mu_pa=4e5", "--resume",       (full / "checkpoints/step_000004.ckpt").string(),
-          "--quiet"};
+  args = {kScenario.string(), resumed.string(), "--set", "/solid/mu_pa=4e5", "--resume",
+          (full / "checkpoints/step_000004.ckpt").string(), "--quiet"};
   EXPECT_EQ(wait_exit_code(start_movie(args, resumed.string() + ".log")), 2);
   EXPECT_NE(read_text(resumed.string() + ".log").find("step_000004.ckpt"), std::string::npos);
 }
@@ -277,9 +272,9 @@ int coloured_pixels_in_centre_column(const fs::path& png) {
 TEST(MovieApp, StretchLetsAThinZoomFillThePicture) {
   // 1 m wide, 5 cm high: with the aspect kept a strip of a few pixels.
   const fs::path kept = fresh_dir("zoom_kept"), stretched = fresh_dir("zoom_stretched");
-  std::vector<std::string> args{
-      kScenario.string(), kept.string(), "--end-time", "0.01",     "--zoom", "-0.5,-0.75,0.5,-0.7",
-      "--field",          "vmag",        "--no-video", "--no-vtu", "--quiet"};
+  std::vector<std::string> args{kScenario.string(), kept.string(), "--end-time", "0.01",
+                                "--zoom", "-0.5,-0.75,0.5,-0.7", "--field", "vmag",
+                                "--no-video", "--no-vtu", "--quiet"};
   ASSERT_EQ(wait_exit_code(start_movie(args, kept.string() + ".log")), 0)
       << read_text(kept.string() + ".log");
   args[1] = stretched.string();
@@ -334,10 +329,10 @@ TEST(MovieApp, SecondFieldAndFilmInsetOptions) {
 TEST(MovieApp, SigintStopsCleanlyWithAPlayableMovie) {
   const fs::path out = fresh_dir("interrupted");
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid =
-      start_movie({kScenario.string(), out.string(), "--end-time", "5", "--frame-every", "2",
-                   "--size", "320x240", "--no-vtu", "--checkpoint-every", "100000"},
-                  out.string() + ".log");
+  const pid_t pid = start_movie({kScenario.string(), out.string(), "--end-time", "5",
+                                 "--frame-every", "2", "--size", "320x240", "--no-vtu",
+                                 "--checkpoint-every", "100000"},
+                                out.string() + ".log");
   // The first frame's summary says the run is under way; then let it go on a little.
   while (!fs::exists(out / "summary.json") &&
          std::chrono::steady_clock::now() - start < std::chrono::seconds(20)) {

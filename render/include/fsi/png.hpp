@@ -13,7 +13,8 @@ namespace fsi::render {
 /// Compression level of write_png/encode_png by default: fast enough to write a
 /// 1280x720 frame per movie step (bench/render_bench.cpp: BM_FrameRenderAndPng).
 /// Measured on such a field frame, one core: level 2 5.4 ms for 144 KB, 4 5.5-5.7 ms
-/// for 116 KB, 6 7.1 ms for 99 KB (zlib's level 1 with libpng: ~8 ms for 178 KB).
+/// for 116 KB, 6 7.1 ms for 99 KB (libpng with zlib's level 1, unfiltered: 8.8 ms for
+/// 166 KB).
 inline constexpr int png_fast_level = 4;
 
 /// Writes an 8-bit PNG (top row first, as Image stores it): RGB when every pixel is
