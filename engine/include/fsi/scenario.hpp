@@ -98,9 +98,9 @@ struct NumericsSpec {
   /// rows at 0.5 m/s).
   double time_step_patch_fraction = 0.125;
   /// Inside the wall zone (ours; 0 = off, the default: every step there is time_step_s).
-  /// A body in the zone but not in real contact may take steps k 2^j up to this length
-  /// (at most time_step_max_s) while at its speed it needs at least four of them to reach
-  /// the wall itself and moves by at most a quarter of what time_step_patch_fraction allows
+  /// A body in the zone may take steps k 2^j up to this length (at most time_step_max_s)
+  /// while at its speed it needs at least four of them to reach the wall itself (in real
+  /// contact: no such condition, a body at rest there) and moves by at most a quarter of what time_step_patch_fraction allows
   /// elsewhere, the speed being the larger of the mean and what its solid nodes reach within
   /// 0.02 s at their present acceleration (a ball at the turn of an impact takes k); the
   /// step-length controller still bounds it. For a ball at rest on a wall (a ball rolling on

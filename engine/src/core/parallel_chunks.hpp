@@ -4,7 +4,7 @@
 /// calling thread, the others on threads of their own, and waits for all of them.
 ///
 /// The callers make each chunk write memory no other chunk writes (patches of one colour
-/// share no node: core::PatchColouring), so the result does not depend on how many
+/// share no node: mesh::colour_patches), so the result does not depend on how many
 /// threads ran or in which order they finished: the same bits for any thread count.
 #include <algorithm>
 #include <thread>

@@ -22,8 +22,8 @@
 ///   |v| * k 2^j <= kWallZonePatchFraction * time_step_patch_fraction * h_cut
 /// (a ball resting on a wall, not one rolling on it), where |v| is here the larger of the
 /// mean speed and what the solid's nodes reach within kWallZoneLookahead_s at their
-/// present speed and acceleration (SolidMotion); in real contact (or without an
-/// interface: min_distance 0) always k. The third keeps the interface
+/// present speed and acceleration (SolidMotion); in real contact (min_distance 0) by the
+/// patch condition alone (a body at rest there), without an interface always k. The third keeps the interface
 /// from crossing more of a patch per step than k does in the thin rows: the graded rows
 /// above the treads reach 10 cm up, and there 8e-3 s steps (3.5 mm in 21 mm rows) failed
 /// where the cut moved past nodes (rho_f = 100 at t = 6.2 s). Besides, the
