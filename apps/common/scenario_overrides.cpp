@@ -26,6 +26,28 @@ Override parse_override(const std::string& path_equals_value) {
   return o;
 }
 
+namespace {
+
+/// The numerics of a method's preset as JSON, or null for a name that is none.
+nlohmann::json preset_numerics(const nlohmann::json& name) {
+  for (const Method m : {Method::fsi, Method::chapter}) {
+    const nlohmann::json s = nlohmann::json::parse(to_json(example1_scenario(m)));
+    if (s["method"] == name) return s["numerics"];
+  }
+  return nullptr;
+}
+
+/// --set /method=NAME on a whole scenario: the numerics still at the old preset's values
+/// take the new preset's; those set otherwise (by the file or an earlier --set) stay.
+void switch_method(nlohmann::json& doc, const nlohmann::json& name) {
+  const nlohmann::json from = preset_numerics(doc["method"]), to = preset_numerics(name);
+  if (from.is_null() || to.is_null()) return;  // parse_scenario words the error
+  for (auto& [key, value] : doc["numerics"].items())
+    if (from.contains(key) && to.contains(key) && value == from[key]) value = to[key];
+}
+
+}  // namespace
+
 Scenario apply_overrides(const Scenario& base, const std::vector<Override>& overrides,
                          const std::string& origin) {
   if (overrides.empty()) return base;
@@ -40,6 +62,11 @@ Scenario apply_overrides(const Scenario& base, const std::vector<Override>& over
                          "no such key (parent " + pointer.parent_pointer().to_string() +
                              " is not in the scenario)");
       }
+      // A key renamed in the format (e.g. time_step_max_s): set it in its old form, which
+      // parse_scenario converts, instead of the new key the base scenario carries.
+      for (const RenamedKey& renamed : kRenamedNumericsKeys)
+        if (o.path == std::string("/numerics/") + renamed.old_key) doc["numerics"].erase(renamed.new_key);
+      if (o.path == "/method") switch_method(doc, o.value);
       doc[pointer] = o.value;
     } catch (const nlohmann::json::exception& e) {
       throw InputError(origin, o.path, std::string("cannot set this key: ") + e.what());

@@ -8,6 +8,12 @@
 /// so keys the file leaves out can be set too, e.g. /mesh/blocks/0/y/0/patches=8.
 /// Values are JSON (1e-3, true, [0, 1], "halve_step"); a value that is not JSON is
 /// taken as a string, so /numerics/failure_policy=halve_step works without quotes.
+///
+/// Two keys act beyond their own value: /method=chapter (or fsi) switches the numerics
+/// that are still at the old preset's value to the new preset's (the others were set on
+/// purpose and stay; give --set /method first, then the numerics to change on top), and
+/// the renamed /numerics/time_step_max_s and /numerics/time_step_wall_zone_max_s set
+/// time_step_max_doublings and time_step_wall_zone_doublings as a file's old keys do.
 #include <fsi/scenario.hpp>
 #include <nlohmann/json.hpp>
 #include <string>

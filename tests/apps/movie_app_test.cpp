@@ -128,7 +128,8 @@ TEST(MovieApp, WritesEveryOutputOfAShortRun) {
 }
 
 TEST(MovieApp, FramesComeEveryFrameIntervalOfSimulatedTime) {
-  // Steps of 2k far from the ground (numerics.time_step_max_s; the first one or two are k,
+  // Steps of 2k far from the ground (numerics.time_step_max_doublings = 1, set here in its
+  // old form time_step_max_s, which still works; the first one or two are k,
   // the step-length controller starts there): a frame every frame_every x k = 0.02 s of
   // simulated time is one every 2k step, not every second step.
   const fs::path out = fresh_dir("long_steps");

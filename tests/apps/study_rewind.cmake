@@ -26,7 +26,7 @@ set(_all "step_000002.ckpt;step_000004.ckpt;step_000006.ckpt;step_000008.ckpt;st
 
 run_movie(${_scenario} ${_dir}/study/a)
 run_movie(${_scenario} ${_dir}/study/b)
-file(WRITE ${_dir}/study/b/study-settings.txt "/numerics/time_step_wall_zone_max_s=2e-3\n/numerics/backflow_beta=0.5\n")
+file(WRITE ${_dir}/study/b/study-settings.txt "/numerics/time_step_wall_zone_doublings=2\n/numerics/backflow_beta=0.5\n")
 
 # Refused, nothing changed.
 run_tool(study-rewind 2 ${_dir}/study 0.05)
@@ -48,7 +48,7 @@ expect_settings(a "/numerics/backflow_beta=1\n")
 run_tool(study-rewind 0 ${_dir}/study 0.05 --set /numerics/backflow_beta=1)
 expect_checkpoints(b "step_000002.ckpt;step_000004.ckpt")
 expect_settings(a "/numerics/backflow_beta=1\n")
-expect_settings(b "/numerics/time_step_wall_zone_max_s=2e-3\n/numerics/backflow_beta=1\n")
+expect_settings(b "/numerics/time_step_wall_zone_doublings=2\n/numerics/backflow_beta=1\n")
 if(NOT _tool_out MATCHES "--set /numerics/backflow_beta=1")
   message(FATAL_ERROR "the settings to go on with are not printed: ${_tool_out}")
 endif()

@@ -1,6 +1,6 @@
-// Longer steps away from the walls (numerics.time_step_max_s, core/time_step_choice.hpp):
+// Longer steps away from the walls (numerics.time_step_max_doublings, core/time_step_choice.hpp):
 // a ball falling far from the ground takes them and arrives where the constant-k run
-// does; near the ground every step is k again, unless numerics.time_step_wall_zone_max_s
+// does; near the ground every step is k again, unless numerics.time_step_wall_zone_doublings
 // lets a body nearly at rest there take longer ones.
 #include <fsi/engine.hpp>
 #include <gtest/gtest.h>
@@ -11,10 +11,11 @@
 
 namespace {
 
-fsi::Scenario falling_ball(double k_max) {
+/// Steps up to k 2^doublings, k = 5e-3 s.
+fsi::Scenario falling_ball(int doublings) {
   fsi::Scenario s = fsi::testing::coarse_example1();
   s.numerics.time_step_s = 5e-3;
-  s.numerics.time_step_max_s = k_max;
+  s.numerics.time_step_max_doublings = doublings;
   s.numerics.time_step_wall_zone_m = 0.03;
   s.numerics.time_step_patch_fraction = 1.0;  // the coarse patches are not what is tested here
   s.numerics.end_time_s = 0.2;
@@ -23,7 +24,7 @@ fsi::Scenario falling_ball(double k_max) {
 }
 
 TEST(AdaptiveTimeStep, FarFromTheWallsStepsAreLongerAndEndWhereConstantStepsEnd) {
-  fsi::Engine constant(falling_ball(0.0)), adaptive(falling_ball(1e-2));
+  fsi::Engine constant(falling_ball(0)), adaptive(falling_ball(1));
   int constant_steps = 0, adaptive_steps = 0;
   while (constant.state().time_s < 0.2 - 1e-9) {
     const fsi::StepReport r = constant.step();
@@ -38,7 +39,7 @@ TEST(AdaptiveTimeStep, FarFromTheWallsStepsAreLongerAndEndWhereConstantStepsEnd)
     if (adaptive_steps == 0) {
       EXPECT_DOUBLE_EQ(r.time_step_s, 5e-3);
     }
-    // A power-of-two multiple of k, at most time_step_max_s.
+    // A power-of-two multiple of k, at most k 2^time_step_max_doublings.
     const double ratio = r.time_step_s / 5e-3;
     EXPECT_NEAR(ratio, std::exp2(std::round(std::log2(ratio))), 1e-12);
     EXPECT_LE(r.time_step_s, 1e-2 * (1 + 1e-12));
@@ -58,7 +59,7 @@ TEST(AdaptiveTimeStep, FarFromTheWallsStepsAreLongerAndEndWhereConstantStepsEnd)
 }
 
 TEST(AdaptiveTimeStep, NearAWallEveryStepIsK) {
-  fsi::Scenario s = falling_ball(1e-2);
+  fsi::Scenario s = falling_ball(1);
   // Example 1's ground is y = -1: the ball's bottom 2 cm above it, inside the wall zone.
   s.body.center_m = {0.0, -1.0 + s.body.radius_m + 0.02};
   fsi::Engine engine(s);
@@ -69,13 +70,13 @@ TEST(AdaptiveTimeStep, NearAWallEveryStepIsK) {
 }
 
 // A ball set down 5 mm above the ground, inside the contact force's reach (dist_0 = 1 cm):
-// it sinks at about 1 cm/s, slowed by the film, so with time_step_wall_zone_max_s it takes
+// it sinks at about 1 cm/s, slowed by the film, so with time_step_wall_zone_doublings it takes
 // longer steps and follows the constant-k run (first order in the step: 0.14 mm ahead of
 // it after 0.2 s, 1.3 mm down).
-fsi::Scenario resting_ball(double k_max, double zone_max) {
-  fsi::Scenario s = falling_ball(k_max);
+fsi::Scenario resting_ball(int doublings, int zone_doublings) {
+  fsi::Scenario s = falling_ball(doublings);
   s.numerics.time_step_patch_fraction = 0.125;
-  s.numerics.time_step_wall_zone_max_s = zone_max;
+  s.numerics.time_step_wall_zone_doublings = zone_doublings;
   s.numerics.end_time_s = 0.2;
   s.gravity_mps2 = {0.0, -0.5};
   s.contact.gamma_c = 800.0;
@@ -85,7 +86,7 @@ fsi::Scenario resting_ball(double k_max, double zone_max) {
 }
 
 TEST(AdaptiveTimeStep, ABodyAtRestInTheWallZoneTakesLongerStepsOnlyWhenAllowed) {
-  fsi::Engine constant(resting_ball(2e-2, 0.0)), longer(resting_ball(2e-2, 2e-2));
+  fsi::Engine constant(resting_ball(2, 0)), longer(resting_ball(2, 2));
   int constant_steps = 0, longer_steps = 0;
   double longest_s = 0.0;
   while (constant.state().time_s < 0.2 - 1e-9) {

@@ -42,11 +42,11 @@ TEST(Determinism, RestoredStateContinuesBitIdentically) {
 
 TEST(Determinism, RestoredStateContinuesBitIdenticallyWithLongerSteps) {
   // The next step's length comes from the state's functionals and the controller's
-  // limit (time_step_max_s): a restored state must choose it as the uninterrupted run
+  // limit (time_step_max_doublings): a restored state must choose it as the uninterrupted run
   // did. After one step (k) the limit is 2k although 4k would be allowed otherwise.
   fsi::Scenario s = fsi::testing::coarse_example1();
   s.numerics.time_step_s = 5e-3;
-  s.numerics.time_step_max_s = 2e-2;
+  s.numerics.time_step_max_doublings = 2;  // up to 2e-2 s
   expect_restored_state_continues_bit_identically(s, 1, 3);
 }
 
@@ -55,7 +55,7 @@ TEST(Determinism, RestoredStateContinuesBitIdenticallyWithErrorControlAndThreeTh
   // loops on three threads sum in the fixed colour order.
   fsi::Scenario s = fsi::testing::coarse_example1();
   s.numerics.time_step_s = 5e-3;
-  s.numerics.time_step_max_s = 2e-2;
+  s.numerics.time_step_max_doublings = 2;  // up to 2e-2 s
   s.numerics.time_error_tolerance_m = 1e-6;
   s.numerics.assembly_threads = 3;
   expect_restored_state_continues_bit_identically(s, 3, 3);

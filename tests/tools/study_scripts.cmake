@@ -80,7 +80,7 @@ endif()
 # finished (fsi-movie stops there; halved steps can end just short of it), one that ended
 # further short is not.
 file(MAKE_DIRECTORY ${_dir}/short)
-file(WRITE ${_dir}/short/scenario.json "{\n  \"numerics\": {\n    \"time_step_s\": 0.0005,\n    \"time_step_max_s\": 0.002\n  }\n}\n")
+file(WRITE ${_dir}/short/scenario.json "{\n  \"numerics\": {\n    \"time_step_s\": 0.0005,\n    \"time_step_max_doublings\": 2\n  }\n}\n")
 file(WRITE ${_dir}/short/summary.json "{\n  \"final\": true,\n  \"interrupted\": false,\n  \"stop_reason\": \"\",\n  \"simulated_time_s\": 3.9999375\n}\n")
 execute_process(COMMAND ${BASH} -c
     "source '${SOURCE_DIR}/tools/study-common.sh' && study_run_finished '${_dir}/short' 4.0 && ! study_run_finished '${_dir}/short' 4.001"

@@ -83,11 +83,13 @@ TEST(ScenarioJson, WritesEveryField) {
 }
 
 TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
-  const fsi::Scenario a = fsi::example1_scenario();
+  // The chapter's numerics: the keys added later are at the value they count from.
+  const fsi::Scenario a = fsi::example1_scenario(fsi::Method::chapter);
   const std::string f = fsi::fingerprint(a);
   EXPECT_EQ(f.size(), 16u);
   EXPECT_EQ(f.find_first_not_of("0123456789abcdef"), std::string::npos);
-  EXPECT_EQ(fsi::fingerprint(fsi::example1_scenario()), f);
+  EXPECT_EQ(fsi::fingerprint(fsi::example1_scenario(fsi::Method::chapter)), f);
+  EXPECT_NE(fsi::fingerprint(fsi::example1_scenario()), f);  // the fsi preset: other numerics
 
   fsi::Scenario renamed = a;  // name, source and output do not change the physics
   renamed.name = "other";
@@ -114,9 +116,9 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   e.numerics.reuse_contraction = 0.5;
   e.numerics.max_halvings = 1;
   e.numerics.accept_flagged_reduction = 1e-4;
-  e.numerics.time_step_max_s = 8e-3;  // longer steps away from the walls: like halve_step
+  e.numerics.time_step_max_doublings = 2;  // longer steps away from the walls: like halve_step
   e.numerics.time_step_wall_zone_m = 0.05;
-  e.numerics.time_step_wall_zone_max_s = 4e-3;
+  e.numerics.time_step_wall_zone_doublings = 1;
   e.numerics.accept_best_max_residual = 10.0;
   EXPECT_EQ(fsi::fingerprint(e), f);
   EXPECT_NE(fsi::io::fingerprint_v3(e), fsi::io::fingerprint_v3(a));  // format 3 covered them
@@ -138,14 +140,29 @@ TEST(ScenarioJson, FingerprintIsStableAndSensitive) {
   fsi::Scenario l = a;  // contact added later: the same (the default, true, keeps the pin)
   l.contact.corners_as_walls = false;
   EXPECT_NE(fsi::fingerprint(l), f);
+  fsi::Scenario m = a;  // the preset's name alone does not count, only the numerics
+  m.method = fsi::Method::fsi;
+  EXPECT_EQ(fsi::fingerprint(m), f);
+}
+
+TEST(ScenarioJson, FingerprintOfOldKeysIsTheSameAsOfDoublings) {
+  // A checkpoint written with time_step_max_s = 8e-3 under format 3 still matches.
+  const fsi::Scenario old_keys = fsi::parse_scenario(
+      R"({"method": "chapter", "numerics": {"time_step_max_s": 8e-3, "time_step_wall_zone_max_s": 4e-3}})", "old.json");
+  fsi::Scenario doublings = fsi::example1_scenario(fsi::Method::chapter);
+  doublings.numerics.time_step_max_doublings = 2;
+  doublings.numerics.time_step_wall_zone_doublings = 1;
+  EXPECT_EQ(fsi::io::fingerprint_v3(old_keys), fsi::io::fingerprint_v3(doublings));
+  EXPECT_EQ(fsi::fingerprint(old_keys), fsi::fingerprint(doublings));
 }
 
 TEST(ScenarioJson, FingerprintIsPinned) {
   // Changing this value invalidates every checkpoint written so far: bump the checkpoint
   // format version with it.
-  EXPECT_EQ(fsi::fingerprint(fsi::example1_scenario()), "655e059f0ab3abd4");
+  // The chapter's numerics: the same values as before the presets existed.
+  EXPECT_EQ(fsi::fingerprint(fsi::example1_scenario(fsi::Method::chapter)), "655e059f0ab3abd4");
   // Format 3's, which the oldest checkpoints carry.
-  EXPECT_EQ(fsi::io::fingerprint_v3(fsi::example1_scenario()), "039e20b201cdf25e");
+  EXPECT_EQ(fsi::io::fingerprint_v3(fsi::example1_scenario(fsi::Method::chapter)), "039e20b201cdf25e");
 }
 
 TEST(ScenarioJson, RejectsBrokenJsonWithLineAndColumn) {
@@ -208,16 +225,20 @@ TEST(ScenarioJson, RejectsValuesOutOfRange) {
                      {"(0, 1e+05] kg/m^3", "got 0"});
   expect_parse_error(R"({"name": "a/b"})", "/name", {"characters from", "got \"a/b\""});
   expect_parse_error(R"({"numerics": {"time_step_s": 2e-3, "time_step_max_s": 1e-3}})", "/numerics/time_step_max_s",
-                     {"0 (off) or at least time_step_s = 0.002 s", "got 0.001"});
-  expect_parse_error(R"({"numerics": {"time_step_max_s": 8e-3, "time_step_wall_zone_m": 5e-3},
+                     {"old form of time_step_max_doublings", "[0.002, 0.128] s", "got number 0.001"});
+  expect_parse_error(R"({"numerics": {"time_step_s": 1e-3, "time_step_max_s": 0.2}})", "/numerics/time_step_max_s",
+                     {"[0.001, 0.064] s", "got number 0.2"});
+  expect_parse_error(R"({"numerics": {"time_step_max_s": 8e-3, "time_step_max_doublings": 2}})",
+                     "/numerics/time_step_max_s", {"replaced by time_step_max_doublings"});
+  expect_parse_error(R"({"numerics": {"time_step_wall_zone_m": 5e-3},
                          "contact": {"gamma_c": 800, "dist0_m": 1e-2}})",
                      "/numerics/time_step_wall_zone_m", {"at least contact.dist0_m = 0.01 m", "got 0.005"});
   expect_parse_error(R"({"numerics": {"time_step_wall_zone_m": -1}})", "/numerics/time_step_wall_zone_m",
                      {"[0, 1000] m", "got -1"});
-  expect_parse_error(R"({"numerics": {"time_step_max_s": 8e-3, "time_step_wall_zone_max_s": 1.6e-2}})",
-                     "/numerics/time_step_wall_zone_max_s", {"[time_step_s, time_step_max_s] = [0.002, 0.008] s", "got 0.016"});
-  expect_parse_error(R"({"numerics": {"time_step_wall_zone_max_s": 4e-3}})", "/numerics/time_step_wall_zone_max_s",
-                     {"0 (off) while time_step_max_s is 0", "got 0.004"});
+  expect_parse_error(R"({"numerics": {"time_step_max_doublings": 7}})", "/numerics/time_step_max_doublings",
+                     {"[0, 6]", "got 7"});
+  expect_parse_error(R"({"numerics": {"time_step_wall_zone_doublings": -1}})",
+                     "/numerics/time_step_wall_zone_doublings", {"[0, 6]", "got -1"});
   expect_parse_error(R"({"name": ""})", "/name", {"1 to 128"});
 }
 
@@ -411,6 +432,124 @@ TEST(ScenarioValidate, BallMustLieInTheUnionOfTheBlocks) {
   // Inside the bounding box, centre inside a block, but reaching into the missing corner.
   expect_input_error([] { fsi::validate(l_shaped({0.2, -0.2})); },
                      {"/body/radius_m", "inside the meshed domain", "outside every block"});
+}
+
+}  // namespace
+
+namespace {
+
+// ---- the method presets -------------------------------------------------------------
+
+TEST(ScenarioMethod, FsiIsTheDefaultAndDiffersFromTheChapterWhereListed) {
+  const fsi::Scenario s = fsi::parse_scenario("{}", "empty.json");
+  EXPECT_EQ(s.method, fsi::Method::fsi);
+  const fsi::NumericsSpec& n = s.numerics;
+  EXPECT_EQ(n.time_step_max_doublings, 3);
+  EXPECT_EQ(n.time_step_wall_zone_doublings, 2);
+  EXPECT_EQ(n.time_error_tolerance_m, 1e-5);
+  EXPECT_EQ(n.newton_rel_tol, 1e-6);
+  EXPECT_EQ(n.reuse_contraction, 0.5);
+  EXPECT_EQ(n.newton_budget, 12);
+  EXPECT_EQ(n.cavitation_pressure_pa, -1e4);
+  EXPECT_EQ(n.backflow_beta, 1.0);
+  EXPECT_EQ(n.rereference_angle_rad, 0.05);
+  EXPECT_EQ(n.time_step_max_s(), 1.6e-2);
+  EXPECT_EQ(n.time_step_wall_zone_max_s(), 8e-3);
+  // The member initialisers are the fsi preset.
+  fsi::Scenario a = fsi::example1_scenario();
+  fsi::Scenario b = a;
+  a.numerics = fsi::NumericsSpec{};
+  b.numerics = fsi::numerics_for(fsi::Method::fsi);
+  EXPECT_EQ(fsi::to_json(a), fsi::to_json(b));
+}
+
+TEST(ScenarioMethod, ChapterIsTheChaptersNumerics) {
+  const fsi::Scenario s = fsi::parse_scenario(R"({"method": "chapter"})", "chapter.json");
+  EXPECT_EQ(s.method, fsi::Method::chapter);
+  const fsi::NumericsSpec& n = s.numerics;
+  EXPECT_EQ(n.time_step_max_doublings, 0);
+  EXPECT_EQ(n.time_step_wall_zone_doublings, 0);
+  EXPECT_EQ(n.time_error_tolerance_m, 0.0);
+  EXPECT_EQ(n.newton_rel_tol, 1e-8);
+  EXPECT_EQ(n.reuse_contraction, 0.2);
+  EXPECT_EQ(n.newton_budget, 8);
+  EXPECT_EQ(n.cavitation_pressure_pa, 0.0);
+  EXPECT_EQ(n.backflow_beta, 0.0);
+  EXPECT_EQ(n.rereference_angle_rad, 0.0);
+  EXPECT_EQ(n.time_step_max_s(), 0.0);
+  EXPECT_EQ(n.time_step_wall_zone_max_s(), 0.0);
+  // Everything else as the fsi preset.
+  fsi::NumericsSpec same = fsi::numerics_for(fsi::Method::fsi);
+  same.time_step_max_doublings = 0;
+  same.time_step_wall_zone_doublings = 0;
+  same.time_error_tolerance_m = 0.0;
+  same.newton_rel_tol = 1e-8;
+  same.reuse_contraction = 0.2;
+  same.newton_budget = 8;
+  same.cavitation_pressure_pa = 0.0;
+  same.backflow_beta = 0.0;
+  same.rereference_angle_rad = 0.0;
+  fsi::Scenario expected = fsi::example1_scenario(fsi::Method::chapter);
+  expected.numerics = same;
+  expected.source = s.source;
+  EXPECT_EQ(fsi::to_json(s), fsi::to_json(expected));
+}
+
+TEST(ScenarioMethod, KeysGivenWinOverThePresetWhereverMethodStands) {
+  const fsi::Scenario s = fsi::parse_scenario(
+      R"({"numerics": {"backflow_beta": 0.5, "newton_budget": 20}, "method": "chapter"})", "mixed.json");
+  EXPECT_EQ(s.method, fsi::Method::chapter);
+  EXPECT_EQ(s.numerics.backflow_beta, 0.5);
+  EXPECT_EQ(s.numerics.newton_budget, 20);
+  EXPECT_EQ(s.numerics.cavitation_pressure_pa, 0.0);  // the chapter's
+  const fsi::Scenario f = fsi::parse_scenario(R"({"numerics": {"cavitation_pressure_pa": 0}})", "f.json");
+  EXPECT_EQ(f.numerics.cavitation_pressure_pa, 0.0);
+  EXPECT_EQ(f.numerics.backflow_beta, 1.0);  // the fsi preset's
+}
+
+TEST(ScenarioMethod, RoundTripsWithItsMethod) {
+  for (const fsi::Method m : {fsi::Method::fsi, fsi::Method::chapter}) {
+    fsi::Scenario s = fsi::example1_scenario(m);
+    s.numerics.backflow_beta = 0.25;
+    const std::string text = fsi::to_json(s);
+    EXPECT_NE(text.find(m == fsi::Method::fsi ? R"("method": "fsi")" : R"("method": "chapter")"), std::string::npos);
+    const fsi::Scenario back = fsi::parse_scenario(text, "back.json");
+    EXPECT_EQ(back.method, m);
+    EXPECT_EQ(fsi::to_json(back), text);
+  }
+}
+
+TEST(ScenarioMethod, BadMethodNamesFileKeyAndAllowedValues) {
+  expect_parse_error(R"({"method": "book"})", "/method", {"one of \"fsi\", \"chapter\"", "got string \"book\""});
+  expect_parse_error(R"({"method": 1})", "/method", {"one of \"fsi\", \"chapter\"", "got number 1"});
+}
+
+TEST(ScenarioMethod, OldStepLimitKeysConvertToDoublings) {
+  // floor(log2(max / time_step_s)): 8e-3 / 2e-3 = 4 -> 2; 6e-3 / 2e-3 = 3 -> 1; 0 -> off.
+  fsi::Scenario s = fsi::parse_scenario(
+      R"({"numerics": {"time_step_max_s": 8e-3, "time_step_wall_zone_max_s": 6e-3}})", "old.json");
+  EXPECT_EQ(s.numerics.time_step_max_doublings, 2);
+  EXPECT_EQ(s.numerics.time_step_wall_zone_doublings, 1);
+  // The file's time_step_s, wherever it stands: 2e-3 / 5e-4 = 4 -> 2.
+  s = fsi::parse_scenario(R"({"numerics": {"time_step_max_s": 2e-3, "time_step_s": 5e-4}})", "old.json");
+  EXPECT_EQ(s.numerics.time_step_max_doublings, 2);
+  EXPECT_EQ(s.numerics.time_step_max_s(), 2e-3);
+  // The wall zone's limit is at most the one outside: the fsi default 2 under 1 acts as 1.
+  EXPECT_EQ(s.numerics.time_step_wall_zone_doublings, 2);
+  s.numerics.time_step_max_doublings = 1;
+  EXPECT_EQ(s.numerics.time_step_wall_zone_max_s(), 1e-3);
+  s.numerics.time_step_max_doublings = 0;
+  EXPECT_EQ(s.numerics.time_step_wall_zone_max_s(), 0.0);
+  s = fsi::parse_scenario(R"({"numerics": {"time_step_max_s": 0, "time_step_wall_zone_max_s": 0}})", "old.json");
+  EXPECT_EQ(s.numerics.time_step_max_doublings, 0);
+  EXPECT_EQ(s.numerics.time_step_wall_zone_doublings, 0);
+  // Rounding: 1.6e-2 / 2e-3 is 8 up to the last bit.
+  s = fsi::parse_scenario(R"({"numerics": {"time_step_max_s": 1.6e-2}})", "old.json");
+  EXPECT_EQ(s.numerics.time_step_max_doublings, 3);
+  // Written back in the new keys only.
+  const std::string text = fsi::to_json(s);
+  EXPECT_EQ(text.find("time_step_max_s"), std::string::npos);
+  EXPECT_NE(text.find(R"("time_step_max_doublings": 3)"), std::string::npos);
 }
 
 }  // namespace

@@ -86,9 +86,9 @@ TEST(TimeErrorEstimate, StepForErrorScalesWithTheSquareRootAndIsBounded) {
 }
 
 TEST(TimeErrorEstimate, ChooseTimeStepGoesBelowKOnlyWithErrorControl) {
-  fsi::NumericsSpec n;
+  fsi::NumericsSpec n = fsi::numerics_for(fsi::Method::chapter);
   n.time_step_s = 2e-3;
-  n.time_step_max_s = 1.6e-2;
+  n.time_step_max_doublings = 3;  // up to 1.6e-2 s
   fsi::Functionals far;
   far.min_distance_m = 1.0;
   EXPECT_DOUBLE_EQ(fsi::core::choose_time_step(n, far, 1.0, 0.0, 6e-4), 2e-3);  // control off: k

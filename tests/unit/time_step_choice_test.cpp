@@ -1,5 +1,5 @@
 // The length of the next step (core/time_step_choice.hpp): k near the walls, k 2^j up to
-// time_step_max_s where the body needs at least four such steps to reach the wall zone.
+// k 2^time_step_max_doublings where the body needs at least four such steps to reach the wall zone.
 #include "core/time_step_choice.hpp"
 
 #include "fe/cut_mesh.hpp"
@@ -16,10 +16,11 @@ using fsi::core::choose_time_step;
 
 constexpr double kWide = 1.0;  // patches of 1 m: the patch criterion never binds
 
-fsi::NumericsSpec numerics(double k_max) {
-  fsi::NumericsSpec n;
+/// The chapter's numerics with steps up to k 2^doublings away from the walls (k = 1e-3 s).
+fsi::NumericsSpec numerics(int doublings) {
+  fsi::NumericsSpec n = fsi::numerics_for(fsi::Method::chapter);
   n.time_step_s = 1e-3;
-  n.time_step_max_s = k_max;
+  n.time_step_max_doublings = doublings;
   n.time_step_wall_zone_m = 0.03;
   n.end_time_s = 12.0;
   return n;
@@ -43,13 +44,14 @@ fsi::mesh::PatchMesh unit_box(int columns, const fsi::AxisPiece& y) {
   return fsi::mesh::build_patch_mesh(spec, {});
 }
 
-TEST(TimeStepChoice, OffByDefaultEveryStepIsK) {
-  fsi::NumericsSpec n;  // time_step_max_s = 0: the chapter's constant step
+TEST(TimeStepChoice, OffInTheChaptersMethodEveryStepIsK) {
+  // time_step_max_doublings = 0: the chapter's constant step
+  const fsi::NumericsSpec n = fsi::numerics_for(fsi::Method::chapter);
   EXPECT_EQ(choose_time_step(n, body(1.0, 0.0, 0.0), kWide, 0.0), n.time_step_s);
 }
 
 TEST(TimeStepChoice, InsideTheWallZoneTheStepIsK) {
-  const auto n = numerics(8e-3);
+  const auto n = numerics(3);
   EXPECT_EQ(choose_time_step(n, body(0.029, 0.0, 0.0), kWide, 1.0), 1e-3);
   EXPECT_EQ(choose_time_step(n, body(0.03, 0.0, 0.0), kWide, 1.0), 1e-3);
   // No interface (a body gone): distance 0, the safe step.
@@ -57,13 +59,12 @@ TEST(TimeStepChoice, InsideTheWallZoneTheStepIsK) {
 }
 
 TEST(TimeStepChoice, AtRestFarFromTheWallsTheLongestStep) {
-  EXPECT_DOUBLE_EQ(choose_time_step(numerics(8e-3), body(0.2, 0.0, 0.0), kWide, 0.0), 8e-3);
-  // time_step_max_s between two powers: the power below it.
-  EXPECT_DOUBLE_EQ(choose_time_step(numerics(6e-3), body(0.2, 0.0, 0.0), kWide, 0.0), 4e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(numerics(3), body(0.2, 0.0, 0.0), kWide, 0.0), 8e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(numerics(2), body(0.2, 0.0, 0.0), kWide, 0.0), 4e-3);
 }
 
 TEST(TimeStepChoice, ApproachingTheZoneTheStepComesDownToK) {
-  const auto n = numerics(8e-3);
+  const auto n = numerics(3);
   // 1 m/s: four steps of 8e-3 cover 3.2 cm, of 4e-3 1.6 cm, of 2e-3 8 mm.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.033, 0.0, -1.0), kWide, 0.0), 8e-3);
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.03 + 0.031, 0.0, -1.0), kWide, 0.0), 4e-3);
@@ -75,7 +76,7 @@ TEST(TimeStepChoice, ApproachingTheZoneTheStepComesDownToK) {
 }
 
 TEST(TimeStepChoice, TheInterfaceCrossesAtMostAnEighthOfItsSmallestCutPatch) {
-  const auto n = numerics(8e-3);  // time_step_patch_fraction 1/8 by default
+  const auto n = numerics(3);  // time_step_patch_fraction 1/8 by default
   // 0.5 m/s in rows of 21 mm: 0.125 x 21 mm / 0.5 m/s = 5.25e-3 s -> 4e-3.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, -0.5), 0.021, 0.0), 4e-3);
   // In the 4 mm rows the bound is 1e-3: k itself.
@@ -85,13 +86,13 @@ TEST(TimeStepChoice, TheInterfaceCrossesAtMostAnEighthOfItsSmallestCutPatch) {
 }
 
 TEST(TimeStepChoice, NeverPastTheEndTime) {
-  const auto n = numerics(8e-3);
+  const auto n = numerics(3);
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 12.0 - 0.005), 4e-3);
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 12.0 - 0.0015), 1e-3);
 }
 
 TEST(TimeStepChoice, AtMostTheLimitTheLastStepsLeft) {
-  const auto n = numerics(8e-3);
+  const auto n = numerics(3);
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 2e-3), 2e-3);
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 3e-3), 2e-3);
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.5, 0.0, 0.0), kWide, 1.0, 1e-3), 1e-3);
@@ -119,11 +120,11 @@ TEST(TimeStepChoice, TheLimitDoublesAfterCalmStepsHalvesAfterLaboriousOnesAndIsK
 }
 
 TEST(TimeStepChoice, InTheWallZoneLongerStepsOnlyForASlowBodyWhenAllowed) {
-  auto n = numerics(8e-3);
-  // Off by default: k in the zone whatever the speed.
+  auto n = numerics(3);
+  // Off (time_step_wall_zone_doublings = 0): k in the zone whatever the speed.
   EXPECT_EQ(choose_time_step(n, body(0.006, 0.0, 0.0), kWide, 1.0), 1e-3);
-  n.time_step_wall_zone_max_s = 4e-3;
-  // At rest 6 mm from the wall: up to the zone's own longest step, not time_step_max_s.
+  n.time_step_wall_zone_doublings = 2;  // up to 4e-3 s
+  // At rest 6 mm from the wall: up to the zone's own longest step, not time_step_max_s().
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.006, 0.0, 0.0), 0.004, 1.0), 4e-3);
   // Slow, 0.02 m/s: four steps of 4e-3 s cover 0.32 mm; the interface moves 0.08 mm per
   // step, within 1/32 of a 4 mm row (0.125 mm).
@@ -152,8 +153,8 @@ TEST(TimeStepChoice, InTheWallZoneLongerStepsOnlyForASlowBodyWhenAllowed) {
 
 TEST(TimeStepChoice, InTheWallZoneABodyAtTheTurnOfAnImpactTakesK) {
   using fsi::core::SolidMotion;
-  auto n = numerics(8e-3);
-  n.time_step_wall_zone_max_s = 4e-3;
+  auto n = numerics(3);
+  n.time_step_wall_zone_doublings = 2;  // up to 4e-3 s
   // 2 mm up, rows of 4 mm, mean velocity zero. At rest: up to 4e-3 s.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.002, 0.0, 0.0), 0.004, 1.0, 0.0, SolidMotion{0.0, 0.0}), 4e-3);
   // At the turn of an impact (the stiff ball: nodes at 0.02 m/s, decelerating at 8 m/s^2,
@@ -217,7 +218,7 @@ TEST(TimeStepChoice, SolidMotionFromTheSolidNodesOfBothLevels) {
 }
 
 TEST(TimeStepChoice, NonFiniteFunctionalsGiveK) {
-  const auto n = numerics(8e-3);
+  const auto n = numerics(3);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(choose_time_step(n, body(0.5, nan, 0.0), kWide, 0.0), 1e-3);
   EXPECT_EQ(choose_time_step(n, body(nan, 0.0, 0.0), kWide, 0.0), 1e-3);

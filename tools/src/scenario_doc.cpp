@@ -17,6 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "fsi/scenario.hpp"
@@ -177,7 +178,9 @@ class DocWriter {
     row.deflt = "\"" + v + "\"";
     return true;
   }
-  static bool describe(Row& row, const fsi::FailurePolicy& v, const fsi::io::Choice& r) {
+  template <class E>
+    requires std::is_enum_v<E>
+  static bool describe(Row& row, const E& v, const fsi::io::Choice& r) {
     row.type = "string";
     row.range = r.text();
     row.deflt = "\"" + std::string(r.names[static_cast<std::size_t>(v)]) + "\"";
@@ -268,6 +271,17 @@ int main(int argc, char** argv) {
     DocWriter top(comments, sections, 0, "", "Scenario", {});
     const fsi::Scenario example1 = fsi::example1_scenario();
     fsi::io::visit_fields(top, example1);
+    // The chapter's preset where it differs: "default (chapter: value)".
+    std::vector<Section> chapter_sections{Section{"Top level (Scenario)", {}}};
+    DocWriter chapter_top(comments, chapter_sections, 0, "", "Scenario", {});
+    const fsi::Scenario chapter = fsi::example1_scenario(fsi::Method::chapter);
+    fsi::io::visit_fields(chapter_top, chapter);
+    for (std::size_t i = 0; i < sections.size(); ++i)
+      for (std::size_t j = 0; j < sections[i].rows.size(); ++j) {
+        Row& row = sections[i].rows[j];
+        const Row& chapter = chapter_sections[i].rows[j];
+        if (row.path != "/method" && row.deflt != chapter.deflt) row.deflt += " (chapter: " + chapter.deflt + ")";
+      }
 
     if (!missing.empty()) {
       std::string list;
@@ -283,6 +297,13 @@ int main(int argc, char** argv) {
            "A scenario is a JSON file whose keys are listed below, section by section. Every key\n"
            "a file leaves out keeps its *default*, the value of the chapter's Example 1\n"
            "(`fsi::example1_scenario()`, the falling ball on the 4225-node mesh), so `{}` is Example 1.\n"
+           "The numerics start from the preset `/method` names: `\"fsi\"` (the default, the\n"
+           "configuration that works) or `\"chapter\"` (the chapter's method unchanged); where the\n"
+           "chapter's value differs, the default column gives it as \"(chapter: value)\". Keys a file\n"
+           "gives win over the preset. Keys marked \"advanced\" are solver knobs a scenario rarely sets.\n"
+           "Files with the older keys `time_step_max_s` and `time_step_wall_zone_max_s` still load: they\n"
+           "become `time_step_max_doublings` and `time_step_wall_zone_doublings`,\n"
+           "floor(log2(value / time_step_s)) (`tools/migrate-scenario` rewrites such a file).\n"
            "Arrays are replaced as a whole. Keys of array items marked *required* must be given.\n"
            "Unknown keys, duplicate keys, wrong types and values outside the range are errors that\n"
            "name the file, the key's path (e.g. `/numerics/time_step_s`) and the range. The apps\n"

@@ -1,8 +1,9 @@
 #pragma once
 /// \file scenario.hpp
 /// Everything that defines a simulation and does not change while it runs: geometry,
-/// mesh, materials, body, numerics, outputs. Defaults are the member initialisers and
-/// reproduce the chapter's Example 1 (falling ball) on the 4225-node mesh.
+/// mesh, materials, body, numerics, outputs. Defaults are the member initialisers: the
+/// chapter's Example 1 (falling ball) on the 4225-node mesh, with the fsi numerics
+/// (Method::fsi; numerics_for(Method::chapter) gives the chapter's numerics).
 ///
 /// A Scenario is validated once where it is built (load_scenario / validate); all code
 /// after that relies on it. Units are SI and carried in the member names.
@@ -81,69 +82,97 @@ enum class FailurePolicy {
   stop_and_rollback  ///< restore the state before the step and report failure
 };
 
+/// Which numerics a scenario starts from (top-level key "method"); keys a file gives win.
+enum class Method {
+  /// The configuration that works (the default): the chapter's discretization with our
+  /// additions on (longer steps away from the walls, error control, the cavitation floor,
+  /// backflow stabilization, re-referencing) and looser Newton tolerances. With it Example 1
+  /// reaches 5 s; with the chapter's numerics it stops near 4.9 s (docs/validation.md).
+  fsi,
+  /// The chapter's method unchanged, every addition of ours off: for validation against
+  /// the chapter (Table 12.1).
+  chapter
+};
+
+/// The numerics. The member initialisers are the fsi preset (Method::fsi); numerics_for()
+/// gives the chapter's (Method::chapter), which differs only in the members listed there.
+/// Members marked "advanced" are solver knobs a scenario rarely needs to set.
 struct NumericsSpec {
-  double time_step_s = 2.0e-3;  ///< k
-  /// Longer steps away from the walls (ours; 0 = off, the chapter: every step is k). A body
-  /// outside the wall zone takes steps k 2^j up to this length, as long as at its speed it
-  /// needs at least four of them to reach the zone (core/time_step_choice.hpp), starting at
-  /// k and at most doubling after each step Newton solved easily, back to k after any
-  /// trouble (State::time_step_limit_s). A solver control: which length the next step has
-  /// does not change what a state is.
-  double time_step_max_s = 0.0;
-  /// The wall zone [m]: a body whose interface is closer than this to a wall takes steps
-  /// of time_step_s (with time_step_max_s > 0 at least contact.dist0_m).
+  double time_step_s = 2.0e-3;  ///< k [s], the base step (typical 5e-4 .. 2e-3)
+  /// Longer steps away from the walls (advanced; ours; 0 = off, the chapter: every step
+  /// is k). A body outside the wall zone takes steps k 2^j up to k 2^n, n this number
+  /// (range 0..6), as long as at its speed it needs at least four of them to reach the
+  /// zone (core/time_step_choice.hpp), starting at k and at most doubling after each step
+  /// Newton solved easily, back to k after any trouble (State::time_step_limit_s). A solver
+  /// control: which length the next step has does not change what a state is. Relative to
+  /// k, so a scenario with a finer k keeps the same ratio.
+  int time_step_max_doublings = 3;
+  /// The wall zone [m] (advanced): a body whose interface is closer than this to a wall takes steps
+  /// of time_step_s (with time_step_max_doublings > 0 at least contact.dist0_m).
   double time_step_wall_zone_m = 0.03;
-  /// ... and while its speed times the step stays within this fraction of the shortest side
+  /// ... (advanced) and while its speed times the step stays within this fraction of the shortest side
   /// of the patches its interface cuts (k itself moves it by up to 1/8 of the stairs' 4 mm
   /// rows at 0.5 m/s).
   double time_step_patch_fraction = 0.125;
-  /// Inside the wall zone (ours; 0 = off, the default: every step there is time_step_s).
-  /// A body in the zone may take steps k 2^j up to this length (at most time_step_max_s)
-  /// while at its speed it needs at least four of them to reach the wall itself (in real
-  /// contact: no such condition, a body at rest there) and moves by at most a quarter of what time_step_patch_fraction allows
-  /// elsewhere, the speed being the larger of the mean and what its solid nodes reach within
-  /// 0.02 s at their present acceleration (a ball at the turn of an impact takes k); the
-  /// step-length controller still bounds it. For a ball at rest on a wall (a ball rolling on
-  /// it at 0.2 m/s still takes k: core/time_step_choice.hpp).
-  double time_step_wall_zone_max_s = 0.0;
-  /// Error control (ours; 0 = off): the largest estimated local error of a step in the
+  /// Inside the wall zone (advanced; ours; 0 = off, every step there is time_step_s).
+  /// A body in the zone may take steps k 2^j up to k 2^n, n this number (a larger number
+  /// than time_step_max_doublings acts as that one), while at its speed it needs at least four of them to reach
+  /// the wall itself (in real contact: no such condition, a body at rest there) and moves
+  /// by at most a quarter of what time_step_patch_fraction allows elsewhere, the speed
+  /// being the larger of the mean and what its solid nodes reach within 0.02 s at their
+  /// present acceleration (a ball at the turn of an impact takes k); the step-length
+  /// controller still bounds it. For a ball at rest on a wall (a ball rolling on it at
+  /// 0.2 m/s still takes k: core/time_step_choice.hpp).
+  int time_step_wall_zone_doublings = 2;
+  /// The longest step away from the walls [s]: k 2^time_step_max_doublings, 0 when off.
+  double time_step_max_s() const {
+    return time_step_max_doublings > 0 ? time_step_s * (1 << time_step_max_doublings) : 0.0;
+  }
+  /// The longest step inside the wall zone [s]: k 2^n, n = min(time_step_wall_zone_doublings,
+  /// time_step_max_doublings), 0 when n = 0 (off).
+  double time_step_wall_zone_max_s() const {
+    const int n = time_step_wall_zone_doublings < time_step_max_doublings ? time_step_wall_zone_doublings
+                                                                          : time_step_max_doublings;
+    return n > 0 ? time_step_s * (1 << n) : 0.0;
+  }
+  /// Error control (advanced; ours; 0 = off): the largest estimated local error of a step in the
   /// body's position [m] (core/time_error_estimate.hpp). After each step the next one may
   /// be at most k (tolerance / error)^{1/2} x 0.8 long (between a quarter and twice the
   /// step just taken), on the ladder time_step_s 2^j, j >= -3, within the other limits
   /// above. A dG(0) step of 2e-3 s in Example 1's fall (0.2 m/s^2) errs by about 4e-7 m.
-  double time_error_tolerance_m = 0.0;
+  double time_error_tolerance_m = 1.0e-5;
   double end_time_s = 5.0;  ///< simulated time at which a run (fsi-movie) ends [s]
-  int newton_budget = 8;             ///< max Newton iterations per step (bounded cost)
-  double newton_rel_tol = 1.0e-8;    ///< stop when |R| <= rel_tol |R_0| ...
-  double newton_abs_tol = 1.0e-10;   ///< ... or |R| <= abs_tol (scaled residual)
-  /// Reuse the factorization while each iteration reduces the residual by this factor.
-  double reuse_contraction = 0.2;
+  int newton_budget = 12;            ///< max Newton iterations per step (advanced; bounded cost)
+  double newton_rel_tol = 1.0e-6;    ///< stop when |R| <= rel_tol |R_0| ... (advanced)
+  double newton_abs_tol = 1.0e-10;   ///< ... or |R| <= abs_tol (scaled residual; advanced)
+  /// Reuse the factorization while each iteration reduces the residual by this factor (advanced).
+  double reuse_contraction = 0.5;
   /// Where Newton needs the Jacobian at a new iterate: solve it by GMRES preconditioned
   /// with the factorization held, up to this many GMRES iterations, and refactorize only
-  /// when that does not converge (ours; 0: refactorize every time). A
+  /// when that does not converge (advanced; ours; 0: refactorize every time). A
   /// factorization of the stairs' 71k unknowns costs about 80 solves with one.
   int krylov_iterations = 0;
-  /// Threads of the element loops (residual and Jacobian assembly); 0: the machine's
+  /// Threads of the element loops (advanced; residual and Jacobian assembly); 0: the machine's
   /// hardware threads, at most 8. A solver control: the results are bit-identical for
   /// every thread count (patches are assembled in groups that share no node).
   int assembly_threads = 0;
-  /// What to do with a step Newton did not solve within its budget (FailurePolicy).
+  /// What to do with a step Newton did not solve within its budget (advanced; FailurePolicy).
   FailurePolicy failure_policy = FailurePolicy::accept_and_flag;
-  int max_halvings = 3;  ///< halve_step: how many times a step may be halved
-  /// halve_step only (ours): an attempt that did not converge but brought its scaled
+  int max_halvings = 3;  ///< halve_step: how many times a step may be halved (advanced)
+  /// halve_step only (advanced; ours): an attempt that did not converge but brought its scaled
   /// residual down to this fraction of its start or below is accepted and flagged at once,
   /// without the retries at k/2, k/4, ... (0: retry every failure). Where Newton stalls just
   /// short of the tolerance (the stairs' thin rows at a corner: 1e-5 of the start), the
   /// smaller steps stall alike and only multiply the cost; a step that really failed
   /// (a reduction of 0.3, say) is still retried.
   double accept_flagged_reduction = 0.0;
-  /// ... and only if its final scaled residual is at or below this (ours).
+  /// ... and only if its final scaled residual is at or below this (advanced; ours).
   /// A step whose start was far off (real contact at a corner: 74 or 1e7) gets down by 1e-5
   /// of it and still ends at 8e-4 or 6e-2, no solution: accepted, such steps broke the body
   /// within three steps, while halved they converged. Stalls near the tolerance (1e-7 ..
   /// 1e-4) are still accepted at once.
   double accept_flagged_max_residual = 1.0e-4;
-  /// With halve_step (ours; 0 = no bound): the best of a step's attempts is accepted when
+  /// With halve_step (advanced; ours; 0 = no bound): the best of a step's attempts is accepted when
   /// every halving failed only if its final scaled residual is at most this; above it the
   /// step is rejected and the state rolled back, so a run stops with a report instead of
   /// going on from a state that solves nothing. A rho_f = 100 stairs run that accepted
@@ -151,58 +180,73 @@ struct NumericsSpec {
   /// run had gone on well after a best of 2150, hence no default bound.
   double accept_best_max_residual = 0.0;
   /// Re-reference the body when its rigid rotation since the last reference exceeds this
-  /// [rad] (ours; 0 = never, the default): u is then measured from the ball
+  /// [rad] (advanced; ours; 0 = never, the chapter; typical 0.05): u is then measured from the ball
   /// turned and moved with the body, which changes no stress, density or interface, but
   /// keeps u and its harmonic extension into the fluid small. Without it a ball that has
   /// rolled carries u = (I - Q) x + ..., whose extension must bend to zero normal
   /// derivative at every wall within the gap: near a wall the IPS level set and Newton's
   /// start for newly covered nodes go wrong (core/rereference.hpp). Part of the
   /// discretization (the extension, hence the cut, changes), so in the fingerprint.
-  double rereference_angle_rad = 0.0;
+  double rereference_angle_rad = 0.05;
 
-  double cip_gamma = 0.05;        ///< gamma of S_aniso (scaled by 1/(rho_f nu_f))
+  double cip_gamma = 0.05;        ///< gamma of S_aniso (advanced; scaled by 1/(rho_f nu_f))
   /// Weight w of the transient term in the CIP scaling gamma h^2 / (rho_f nu_f + w rho_f h^2 / k)
-  /// (ours): 1 scales like PSPG's tau ~ k / rho, 0 is the chapter's Stokes scaling.
+  /// (advanced; ours): 1 scales like PSPG's tau ~ k / rho, 0 is the chapter's Stokes scaling.
   double cip_transient_weight = 1.0;
-  /// Film factor kappa (ours; 0 = off, the chapter): a fluid sub-element of a cut patch
+  /// Film factor kappa (advanced; ours; 0 = off, the chapter): a fluid sub-element of a cut patch
   /// with a node on a no-slip wall uses h = min(h_P, kappa h_K) instead of h_P in the CIP
   /// scaling, h_K its smallest height. In a thin wall film the h_P-scaled term lets the
   /// fluid leak along the film faster than lubrication flow (h_K^3 / (12 mu) grad p)
   /// could drain it; with kappa ~ 1 the leak scales like h_K^3 too.
   double cip_wall_film_factor = 0.0;
-  double solid_alpha = 0.1;       ///< alpha of the solid velocity stabilization (12.7)
-  double solid_s = 2.0;           ///< exponent s in alpha h^s
-  double blend_eps_patches = 1.5; ///< eps of the T_m blend g, in patch sizes
-  double blend_delta_patches = 3.0;  ///< delta of the T_m blend g, in patch sizes
+  double solid_alpha = 0.1;       ///< alpha of the solid velocity stabilization (12.7; advanced)
+  double solid_s = 2.0;           ///< exponent s in alpha h^s (advanced)
+  double blend_eps_patches = 1.5; ///< eps of the T_m blend g, in patch sizes (advanced)
+  double blend_delta_patches = 3.0;  ///< delta of the T_m blend g, in patch sizes (advanced)
   /// A cut closer than cut_snap x (patch side) to a patch corner goes through the corner
-  /// (ours). A cut just beside a corner leaves a sub-element a fraction of a millimetre
+  /// (advanced; ours). A cut just beside a corner leaves a sub-element a fraction of a millimetre
   /// wide whose nodal values are nearly free, and Newton stalls on it (the stairs' thin
   /// rows; docs/solver.md, "Cut snapping and thin rows"). Snapping moves the interface by at most cut_snap x side.
   double cut_snap = 1.0e-6;
   /// A cut closer than this distance [m] to a patch corner goes through the corner too
-  /// (ours; 0 = off, the default). cut_snap is relative to the side it lies on, which in
+  /// (advanced; ours; 0 = off, the default). cut_snap is relative to the side it lies on, which in
   /// flat patches (the stairs' 4-8 mm rows, 5.6 cm wide) is either too small for the short
   /// sides or moves the interface by millimetres along the long ones; a distance treats
   /// both alike. Range [0, 0.1] m.
   double cut_snap_distance_m = 0.0;
-  /// T_m = id where the body is closer than this to a wall (the chapter's contact gap).
+  /// T_m = id where the body is closer than this to a wall (the chapter's contact gap; advanced).
   double identity_gap_m = 0.0;    ///< 0: one patch height at the wall
-  /// Cavitation floor p_cav [Pa] (ours; 0 = off, the chapter). Where the fluid pressure
+  /// Cavitation floor p_cav [Pa] (ours; 0 = off, the chapter; the default -1e4). Where the fluid pressure
   /// falls below p_cav the divergence equation lets the fluid expand,
   /// div v = max(0, p_cav - p) / (rho_f nu_f) (rounded C^1 over |p_cav|/4), so the
   /// pressure cannot fall far below p_cav. Without it the film under a rebounding ball
   /// sucks the ball back with arbitrarily large tension and the ball never lifts off
   /// (docs/method.md, "Cavitation floor"). Range [-1e9, 0].
-  double cavitation_pressure_pa = 0.0;
-  /// Backflow stabilization beta (ours; 0 = off, the chapter's plain do-nothing). Where
+  double cavitation_pressure_pa = -1.0e4;
+  /// Backflow stabilization beta (advanced; ours; 0 = off, the chapter's plain do-nothing; the default 1). Where
   /// fluid enters through an open boundary (v.n < 0) the natural condition becomes
   /// sigma_red n = beta rho_f / 2 (v.n)_- v (Braack & Mucha's directional do-nothing):
   /// with beta = 1 it takes out exactly the kinetic energy the inflow carries in, which
   /// plain do-nothing lets grow without bound (the resting ball's wake fed through the
   /// top grew e-fold in about 0.6 s; docs/method.md, "Backflow stabilization"). Outflow
   /// (v.n >= 0) is unchanged. Range [0, 1].
-  double backflow_beta = 0.0;
+  double backflow_beta = 1.0;
 };
+
+/// The numerics of a preset: Method::fsi gives the member initialisers of NumericsSpec,
+/// Method::chapter the chapter's method (every addition of ours off, Newton as in the
+/// chapter's Table 12.1 runs). The one place where the two presets differ.
+NumericsSpec numerics_for(Method method);
+
+/// Keys renamed in the scenario format; files with the old key still load (the reader
+/// converts time_step_max_s to doublings = floor(log2(max / time_step_s)), 0 for 0).
+struct RenamedKey {
+  const char* old_key;  ///< under /numerics
+  const char* new_key;  ///< under /numerics
+};
+inline constexpr RenamedKey kRenamedNumericsKeys[] = {
+    {"time_step_max_s", "time_step_max_doublings"},
+    {"time_step_wall_zone_max_s", "time_step_wall_zone_doublings"}};
 
 /// Penalty contact (Sect. 12.5): P_c = gamma_c (dist_0 - dist)/dist for dist < dist_0.
 struct ContactSpec {
@@ -236,6 +280,9 @@ struct OutputSpec {
 };
 
 struct Scenario {
+  /// The preset the numerics start from ("fsi" or "chapter"); the file's numerics keys
+  /// override it. Read first, whatever its place in the file.
+  Method method = Method::fsi;
   std::string name = "ball_drop";  ///< names the run (and its files)
   std::filesystem::path source = "<defaults>";  ///< file it came from (for messages)
   MeshSpec mesh;
@@ -251,16 +298,18 @@ struct Scenario {
   OutputSpec output;
 };
 
-/// The chapter's Example 1 (falling ball) on the coarse 4225-node mesh, k = 2e-3 s.
-Scenario example1_scenario();
+/// The chapter's Example 1 (falling ball) on the coarse 4225-node mesh, k = 2e-3 s, with
+/// the numerics of `method` (the default: fsi; Method::chapter: the chapter's Example 1
+/// exactly).
+Scenario example1_scenario(Method method = Method::fsi);
 
 /// Checks every field; throws fsi::InputError naming scenario.source, the key and the
 /// allowed range.
 void validate(const Scenario& scenario);
 
 /// Reads and validates a JSON scenario file. Throws fsi::InputError.
-/// The file overrides Example 1: keys it leaves out keep example1_scenario()'s values
-/// (`{}` is Example 1); unknown or duplicate keys are errors. JSON keys equal the member
+/// The file overrides Example 1: keys it leaves out keep example1_scenario(method)'s values,
+/// method the file's "method" (`{}` is Example 1 with the fsi numerics); unknown or duplicate keys are errors. JSON keys equal the member
 /// names; points are [x, y], walls [[x0, y0], [x1, y1]], enums their names. See
 /// assets/scenarios/README.md.
 Scenario load_scenario(const std::filesystem::path& file);
@@ -269,8 +318,9 @@ Scenario parse_scenario(const std::string& json_text, const std::string& origin)
 /// The scenario as JSON (round-trips through parse_scenario).
 std::string to_json(const Scenario& scenario);
 /// A stable fingerprint of the scenario's physics and numerics (for checkpoints): 16 hex
-/// digits of a 64-bit FNV-1a hash of the canonical JSON without name, source, output,
-/// end time and the solver controls (newton_*, reuse_contraction, failure_policy,
+/// digits of a 64-bit FNV-1a hash of the canonical JSON without name, source, method
+/// (the resolved numerics count, not the preset they came from), output, end time and the
+/// solver controls (newton_*, reuse_contraction, failure_policy,
 /// max_halvings), which do not change the problem a state belongs to.
 std::string fingerprint(const Scenario& scenario);
 

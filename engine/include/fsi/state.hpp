@@ -39,7 +39,7 @@ struct State {
   double time_s = 0.0;
   long step = 0;
   double time_step_s = 0.0;  ///< k used for the last step (may be halved by policy)
-  /// The longest next step [s] that how the last steps went allows (numerics.time_step_max_s
+  /// The longest next step [s] that how the last steps went allows (numerics.time_step_max_doublings
   /// > 0 only): twice the last step after a calm one (converged at its first attempt in at
   /// most core::kCalmNewtonIterations), half the last step after a laborious one, the base
   /// step k after any trouble (a halving, an unconverged or flagged step), and k at the start.

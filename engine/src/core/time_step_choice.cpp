@@ -48,11 +48,11 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
     while (shorter > history_limit_s * (1.0 + 1e-12) && shorter > 0.125 * k * (1.0 + 1e-12)) shorter *= 0.5;
     return shorter;
   }
-  if (!(n.time_step_max_s > k)) return k;  // off (0), or no longer step allowed
-  const double history_s = history_limit_s > 0.0 ? history_limit_s : n.time_step_max_s;
-  const double longest_s = std::min(n.time_step_max_s, history_s);
+  if (!(n.time_step_max_s() > k)) return k;  // off (0), or no longer step allowed
+  const double history_s = history_limit_s > 0.0 ? history_limit_s : n.time_step_max_s();
+  const double longest_s = std::min(n.time_step_max_s(), history_s);
   // In the wall zone only up to time_step_wall_zone_max_s (0: k).
-  const double longest_in_zone_s = std::min(std::max(k, n.time_step_wall_zone_max_s), longest_s);
+  const double longest_in_zone_s = std::min(std::max(k, n.time_step_wall_zone_max_s()), longest_s);
   // In real contact (distance 0 with an interface) the wall itself is no distance away:
   // only a body at rest there takes longer steps, by the patch rule alone.
   const bool real_contact = !(f.min_distance_m > 0.0) && std::isfinite(cut_patch_side_m);

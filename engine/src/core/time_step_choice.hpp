@@ -9,7 +9,8 @@
 /// stays k: there the cut passes the thin rows and the contact force acts, and the runs
 /// failed at 2k.
 ///
-/// With numerics.time_step_max_s > 0 the next step is k 2^j for the largest j with
+/// With numerics.time_step_max_doublings = n > 0 (time_step_max_s() = k 2^n) the next step
+/// is k 2^j for the largest j with
 ///   k 2^j <= time_step_max_s,
 ///   kStepsToWallZone * |v| * k 2^j <= min_distance - time_step_wall_zone_m,
 ///   |v| * k 2^j <= time_step_patch_fraction * h_cut
@@ -17,7 +18,7 @@
 /// the shortest side of the patches its interface cuts), and not past end_time_s. The
 /// second condition makes a body approaching a wall come down to k step by step, at
 /// least kStepsToWallZone steps before it enters the zone; a body inside the zone takes k,
-/// or with numerics.time_step_wall_zone_max_s > 0 steps up to that length as long as
+/// or with numerics.time_step_wall_zone_doublings = m > 0 steps up to k 2^m as long as
 ///   kStepsToWallZone * |v| * k 2^j <= min_distance and
 ///   |v| * k 2^j <= kWallZonePatchFraction * time_step_patch_fraction * h_cut
 /// (a ball resting on a wall, not one rolling on it), where |v| is here the larger of the

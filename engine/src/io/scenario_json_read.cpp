@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "fsi/error.hpp"
@@ -87,12 +88,15 @@ void read(const json& j, const KeyPath& at, std::string& out, const Choice& rule
   out = j.get<std::string>();
 }
 
-void read(const json& j, const KeyPath& at, FailurePolicy& out, const Choice& rule) {
+/// An enum stored by name (FailurePolicy, Method): rule.names in the order of the enum.
+template <class E>
+  requires std::is_enum_v<E>
+void read(const json& j, const KeyPath& at, E& out, const Choice& rule) {
   expect(j.is_string(), at, allowed(rule), j);
   const auto name = j.get<std::string>();
   for (std::size_t i = 0; i < rule.names.size(); ++i) {
     if (name == rule.names[i]) {
-      out = static_cast<FailurePolicy>(i);
+      out = static_cast<E>(i);
       return;
     }
   }
@@ -239,14 +243,55 @@ std::string allowed_at(const std::string& path) {
   return finder.found;
 }
 
+// ---- the preset and renamed keys ------------------------------------------------------
+
+/// The file's "method" (fsi when it has none): the preset its numerics start from.
+Method read_method(const json& root, const KeyPath& at) {
+  Method method = Method::fsi;
+  if (root.is_object() && root.contains("method"))
+    read(root["method"], at / "method", method, Choice{kMethodNames});
+  return method;
+}
+
+/// Replaces /numerics/time_step_max_s and /numerics/time_step_wall_zone_max_s (absolute
+/// lengths, the format before the doublings) by their doublings relative to the file's
+/// time_step_s: floor(log2(max / time_step_s) + 1e-9), 0 (off) for 0.
+void convert_renamed_keys(json& root, const KeyPath& at, double preset_time_step_s) {
+  if (!root.is_object() || !root.contains("numerics") || !root["numerics"].is_object()) return;
+  json& n = root["numerics"];
+  double k = preset_time_step_s;
+  if (n.contains("time_step_s") && n["time_step_s"].is_number()) k = n["time_step_s"].get<double>();
+  for (const RenamedKey& renamed : kRenamedNumericsKeys) {
+    if (!n.contains(renamed.old_key)) continue;
+    const KeyPath key = at / "numerics" / renamed.old_key;
+    if (n.contains(renamed.new_key))
+      fail(key, std::string("replaced by ") + renamed.new_key + "; give only " + renamed.new_key);
+    const json& value = n[renamed.old_key];
+    const std::string why = std::string("(the old form of ") + renamed.new_key +
+                            " = floor(log2(value / time_step_s))) must be 0 (off) or a length in [time_step_s, "
+                            "time_step_s x 64] = [" + number_text(k) + ", " + number_text(64.0 * k) + "] s";
+    expect(value.is_number(), key, why, value);
+    const double max_s = value.get<double>();
+    int doublings = 0;
+    if (max_s != 0.0) {
+      const double d = std::floor(std::log2(max_s / k) + 1e-9);
+      expect(std::isfinite(max_s) && k > 0.0 && d >= 0.0 && d <= 6.0, key, why, value);
+      doublings = static_cast<int>(d);
+    }
+    n.erase(renamed.old_key);
+    n[renamed.new_key] = doublings;
+  }
+}
+
 }  // namespace
 }  // namespace io
 
 Scenario parse_scenario(const std::string& json_text, const std::string& origin) {
-  const nlohmann::json root = io::parse_json_text(json_text, origin, io::allowed_at);
-  Scenario scenario = example1_scenario();
-  scenario.source = origin;
+  nlohmann::json root = io::parse_json_text(json_text, origin, io::allowed_at);
   const io::KeyPath at{&origin, ""};
+  Scenario scenario = example1_scenario(io::read_method(root, at));
+  scenario.source = origin;
+  io::convert_renamed_keys(root, at, scenario.numerics.time_step_s);
   io::read(root, at, scenario, io::Fields{});
   validate(scenario);
   return scenario;

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "fsi/scenario.hpp"
@@ -42,7 +43,10 @@ class JsonWriter {
   static Json value(const std::string& v, const R&) {
     return v;
   }
-  static Json value(const FailurePolicy& v, const Choice& rule) {
+  /// An enum stored by name (FailurePolicy, Method).
+  template <class E>
+    requires std::is_enum_v<E>
+  static Json value(const E& v, const Choice& rule) {
     return std::string(rule.names[static_cast<std::size_t>(v)]);
   }
   template <class R>
@@ -96,14 +100,23 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   // run can be resumed from its checkpoint with a later end time.
   writer.object.erase("name");
   writer.object.erase("output");
+  // The preset the numerics came from: only the resolved numerics below count.
+  writer.object.erase("method");
   writer.object["numerics"].erase("end_time_s");
   // Mesh keys added later count only when used, for the same reason as the numerics below.
   for (auto& block : writer.object["mesh"]["blocks"])
     if (block["y_right"].empty()) block.erase("y_right");
-  // Numerics added after checkpoint version 3 count only when set: at their default every
-  // step is the same as before they existed, so older checkpoints stay loadable.
-  const NumericsSpec defaults;
+  // Numerics added after checkpoint version 3 count only when set: at the chapter's value
+  // (numerics_for(Method::chapter), the defaults when they were added) every step is the
+  // same as before they existed, so older checkpoints stay loadable.
+  const NumericsSpec defaults = numerics_for(Method::chapter);
   const NumericsSpec& n = scenario.numerics;
+  // The step limits as the lengths they were written as before the doublings.
+  auto& numerics = writer.object["numerics"];
+  numerics.erase("time_step_max_doublings");
+  numerics.erase("time_step_wall_zone_doublings");
+  numerics["time_step_max_s"] = n.time_step_max_s();
+  numerics["time_step_wall_zone_max_s"] = n.time_step_wall_zone_max_s();
   const std::pair<const char*, bool> at_default[] = {
       {"cip_wall_film_factor", n.cip_wall_film_factor == defaults.cip_wall_film_factor},
       {"cut_snap", n.cut_snap == defaults.cut_snap},
@@ -112,10 +125,10 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"backflow_beta", n.backflow_beta == defaults.backflow_beta},
       {"accept_flagged_reduction", n.accept_flagged_reduction == defaults.accept_flagged_reduction},
       {"accept_flagged_max_residual", n.accept_flagged_max_residual == defaults.accept_flagged_max_residual},
-      {"time_step_max_s", n.time_step_max_s == defaults.time_step_max_s},
+      {"time_step_max_s", n.time_step_max_doublings == defaults.time_step_max_doublings},
       {"time_step_wall_zone_m", n.time_step_wall_zone_m == defaults.time_step_wall_zone_m},
       {"time_step_patch_fraction", n.time_step_patch_fraction == defaults.time_step_patch_fraction},
-      {"time_step_wall_zone_max_s", n.time_step_wall_zone_max_s == defaults.time_step_wall_zone_max_s},
+      {"time_step_wall_zone_max_s", n.time_step_wall_zone_doublings == defaults.time_step_wall_zone_doublings},
       {"time_error_tolerance_m", n.time_error_tolerance_m == defaults.time_error_tolerance_m},
       {"accept_best_max_residual", n.accept_best_max_residual == defaults.accept_best_max_residual},
       {"krylov_iterations", n.krylov_iterations == defaults.krylov_iterations},

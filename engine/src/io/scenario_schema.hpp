@@ -64,6 +64,8 @@ struct List {
 
 inline constexpr std::array<std::string_view, 3> kFailurePolicyNames{
     "accept_and_flag", "halve_step", "stop_and_rollback"};
+/// In the order of fsi::Method.
+inline constexpr std::array<std::string_view, 2> kMethodNames{"fsi", "chapter"};
 inline constexpr std::array<std::string_view, 5> kOutputFieldNames{"vx", "vy", "vmag", "p", "umag"};
 
 /// Coordinates and lengths: a generous box around any lab-scale set-up, and far from
@@ -134,10 +136,10 @@ template <class V, Like<NumericsSpec> S>
 void visit_fields(V& v, S& n) {
   v("time_step_s", n.time_step_s, Real{0.0, 1.0, true, false, "s"});
   v("end_time_s", n.end_time_s, Real{0.0, 1.0e6, true, false, "s"});
-  v("time_step_max_s", n.time_step_max_s, Real{0.0, 1.0, false, false, "s (0: every step time_step_s)"});
+  v("time_step_max_doublings", n.time_step_max_doublings, Int{0, 6});
   v("time_step_wall_zone_m", n.time_step_wall_zone_m, Real{0.0, 1.0e3, false, false, "m"});
   v("time_step_patch_fraction", n.time_step_patch_fraction, Real{0.0, 1.0e3, true, false, "(of a patch side)"});
-  v("time_step_wall_zone_max_s", n.time_step_wall_zone_max_s, Real{0.0, 1.0, false, false, "s (0: every step in the wall zone time_step_s)"});
+  v("time_step_wall_zone_doublings", n.time_step_wall_zone_doublings, Int{0, 6});
   v("time_error_tolerance_m", n.time_error_tolerance_m, Real{0.0, 1.0, false, false, "m per step (0: no error control)"});
   v("newton_budget", n.newton_budget, Int{1, 100});
   v("newton_rel_tol", n.newton_rel_tol, Real{0.0, 1.0, false, true});
@@ -187,8 +189,10 @@ void visit_fields(V& v, S& o) {
 }
 
 /// The whole file. `source` is not part of it: it records where the file came from.
+/// `method` comes first: the reader starts the numerics from its preset.
 template <class V, Like<Scenario> S>
 void visit_fields(V& v, S& s) {
+  v("method", s.method, Choice{kMethodNames});
   v("name", s.name, Name{});
   v("mesh", s.mesh, Fields{});
   v("walls", s.walls, List<Real>{0, 1000, kCoordinate});
