@@ -87,7 +87,10 @@ int main(int argc, char** argv) {
       const int doublings = std::string(renamed.new_key) == "time_step_max_doublings"
                                 ? old_read.numerics.time_step_max_doublings
                                 : old_read.numerics.time_step_wall_zone_doublings;
-      text = std::regex_replace(text, key, "\"" + std::string(renamed.new_key) + "\"$1" + std::to_string(doublings));
+      // "$1" then a digit would read as another group: the number goes in afterwards.
+      text = std::regex_replace(text, key, "\"" + std::string(renamed.new_key) + "\"$1\x01");
+      for (auto at = text.find('\x01'); at != std::string::npos; at = text.find('\x01'))
+        text.replace(at, 1, std::to_string(doublings));
     }
     fsi::Scenario migrated = fsi::parse_scenario(text, file + " (migrated)");
     migrated.source = old_read.source;

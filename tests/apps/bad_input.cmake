@@ -15,6 +15,7 @@ set(_cases
   "MOVIE|/nothing/here|${_d}/tiny_drop.json|${_out}/m5|--set|/nothing/here=1"
   "MOVIE|--set|${_d}/tiny_drop.json|${_out}/m6|--set|numerics"
   "MOVIE|/solid/mu_pa|${_d}/tiny_drop.json|${_out}/m7|--set|/solid/mu_pa=soft"
+  "MOVIE|/method|${_d}/tiny_drop.json|${_out}/m7b|--set|/method=book"
   "MOVIE|--frobnicate|${_d}/tiny_drop.json|${_out}/m8|--frobnicate"
   "MOVIE|--size|${_d}/tiny_drop.json|${_out}/m9|--size|12"
   "MOVIE|--field|${_d}/tiny_drop.json|${_out}/m10|--field|q"

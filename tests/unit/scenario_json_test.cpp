@@ -520,7 +520,7 @@ TEST(ScenarioMethod, RoundTripsWithItsMethod) {
 }
 
 TEST(ScenarioMethod, BadMethodNamesFileKeyAndAllowedValues) {
-  expect_parse_error(R"({"method": "book"})", "/method", {"one of \"fsi\", \"chapter\"", "got string \"book\""});
+  expect_parse_error(R"({"method": "book"})", "/method", {"one of \"fsi\", \"chapter\"", "got \"book\""});
   expect_parse_error(R"({"method": 1})", "/method", {"one of \"fsi\", \"chapter\"", "got number 1"});
 }
 
