@@ -93,7 +93,7 @@ class MovieRun {
   MovieResult run() {
     const Scenario& s = engine_.scenario();
     // Frames at equal intervals of simulated time, so that a movie plays at one speed when
-    // steps vary in length (time_step_max_s, halved steps): every frame_every-th step at
+    // steps vary in length (time_step_max_doublings, halved steps): every frame_every-th step at
     // a constant k.
     const double frame_interval_s = s.output.frame_every * s.numerics.time_step_s;
     const auto frame_index = [&](double t) {

@@ -74,7 +74,7 @@ class RunSummary {
   std::string stop_reason_;
   long continued_from_step_ = -1;  ///< -1: not a continued run
   /// Accepted steps by length [s], rounded to six digits (a continued run's lengths are
-  /// differences of its CSV times): with numerics.time_step_max_s or halve_step they vary.
+  /// differences of its CSV times): with numerics.time_step_max_doublings or halve_step they vary.
   std::map<double, long> step_lengths_;
   void count_step_length(double length_s);
 };

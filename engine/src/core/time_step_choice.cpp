@@ -51,7 +51,7 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
   if (!(n.time_step_max_s() > k)) return k;  // off (0), or no longer step allowed
   const double history_s = history_limit_s > 0.0 ? history_limit_s : n.time_step_max_s();
   const double longest_s = std::min(n.time_step_max_s(), history_s);
-  // In the wall zone only up to time_step_wall_zone_max_s (0: k).
+  // In the wall zone only up to time_step_wall_zone_max_s() (0: k).
   const double longest_in_zone_s = std::min(std::max(k, n.time_step_wall_zone_max_s()), longest_s);
   // In real contact (distance 0 with an interface) the wall itself is no distance away:
   // only a body at rest there takes longer steps, by the patch rule alone.

@@ -11,7 +11,7 @@
 ///
 /// With numerics.time_step_max_doublings = n > 0 (time_step_max_s() = k 2^n) the next step
 /// is k 2^j for the largest j with
-///   k 2^j <= time_step_max_s,
+///   j <= n,
 ///   kStepsToWallZone * |v| * k 2^j <= min_distance - time_step_wall_zone_m,
 ///   |v| * k 2^j <= time_step_patch_fraction * h_cut
 /// (v the body's mean velocity, min_distance its interface's distance to the walls, h_cut
