@@ -103,6 +103,7 @@ class MovieRun {
     write_frame();
     // Whether the state the loop stops at is worth continuing from (checkpointed below).
     bool resumable_stop = false;
+    bool broken_state = false;  // no frame of it
     for (;;) {
       if (interrupt_requested()) {
         summary_.set_interrupted(true);
@@ -124,7 +125,12 @@ class MovieRun {
         meter_.note(where + r.message);
       }
       if (!r.accepted) {
-        summary_.set_stop_reason("the engine rejected a step: " + r.message);
+        // The engine rolled the step back: the state is the last good one, and it is
+        // what the checkpoint and the last frame below show.
+        char where[64];
+        std::snprintf(where, sizeof where, "step %ld (t = %.6g s): ", st.step + 1, st.time_s);
+        summary_.set_stop_reason(std::string("the engine rejected ") + where + r.message);
+        resumable_stop = true;
         break;
       }
       csv_.append(st, r);
@@ -136,6 +142,7 @@ class MovieRun {
                       st.time_s, st.functionals.mass_error, kLostBodyMassError);
         meter_.note(std::string("fsi-movie: ") + why);
         summary_.set_stop_reason(why);
+        broken_state = true;
         break;
       }
       if (const long i = frame_index(st.time_s); i > last_frame_index) {
@@ -150,7 +157,7 @@ class MovieRun {
     // checkpoint_every steps (hours, for the stairs) earlier.
     if (resumable_stop && options_.checkpoint_every > 0 && engine_.state().step != last_checkpoint_step_)
       write_checkpoint(engine_.state().step);
-    if (engine_.state().step != last_frame_step_) write_frame();  // the last state, always
+    if (!broken_state && engine_.state().step != last_frame_step_) write_frame();  // the last state
     meter_.finish();
     finish_outputs();
     return {summary_.interrupted(), summary_.steps(), summary_.unconverged_steps(), wall_seconds()};

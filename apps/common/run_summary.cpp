@@ -24,6 +24,8 @@ const char* kind_name(StepEvent::Kind k) {
       return "rolled_back";
     case StepEvent::Kind::non_finite:
       return "non_finite";
+    case StepEvent::Kind::degenerated:
+      return "degenerated";
   }
   return "unknown";
 }
@@ -31,7 +33,7 @@ const char* kind_name(StepEvent::Kind k) {
 bool kind_from_name(const std::string& name, StepEvent::Kind& kind) {
   for (StepEvent::Kind k : {StepEvent::Kind::real_contact, StepEvent::Kind::contact_force_active,
                             StepEvent::Kind::step_halved, StepEvent::Kind::rolled_back,
-                            StepEvent::Kind::non_finite}) {
+                            StepEvent::Kind::non_finite, StepEvent::Kind::degenerated}) {
     if (name == kind_name(k)) {
       kind = k;
       return true;
@@ -164,10 +166,9 @@ nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool is_final,
     nlohmann::ordered_json e;
     e["kind"] = kind_name(kind);
     e["first_time_s"] = rec.first.time_s;
-    if (kind == StepEvent::Kind::real_contact) {
+    if (kind == StepEvent::Kind::real_contact || kind == StepEvent::Kind::degenerated)
       e["where_m"] = {rec.first.where_m.x, rec.first.where_m.y};
-      e["wall"] = rec.first.wall;
-    }
+    if (kind == StepEvent::Kind::real_contact) e["wall"] = rec.first.wall;
     e["steps"] = rec.count;
     e["text"] = rec.first.text;
     events.push_back(std::move(e));

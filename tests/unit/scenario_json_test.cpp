@@ -476,6 +476,7 @@ TEST(ScenarioMethod, ChapterIsTheChaptersNumerics) {
   EXPECT_EQ(n.cavitation_pressure_pa, 0.0);
   EXPECT_EQ(n.backflow_beta, 0.0);
   EXPECT_EQ(n.rereference_angle_rad, 0.0);
+  EXPECT_EQ(n.failure_policy, fsi::FailurePolicy::accept_and_flag);
   EXPECT_EQ(n.time_step_max_s(), 0.0);
   EXPECT_EQ(n.time_step_wall_zone_max_s(), 0.0);
   // Everything else as the fsi preset.
@@ -489,6 +490,7 @@ TEST(ScenarioMethod, ChapterIsTheChaptersNumerics) {
   same.cavitation_pressure_pa = 0.0;
   same.backflow_beta = 0.0;
   same.rereference_angle_rad = 0.0;
+  same.failure_policy = fsi::FailurePolicy::accept_and_flag;
   fsi::Scenario expected = fsi::example1_scenario(fsi::Method::chapter);
   expected.numerics = same;
   expected.source = s.source;

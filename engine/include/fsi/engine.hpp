@@ -20,7 +20,9 @@ namespace fsi {
 
 /// Something noteworthy that happened during a step.
 struct StepEvent {
-  enum class Kind { real_contact, contact_force_active, step_halved, rolled_back, non_finite };
+  /// degenerated: the step's solution broke the body (core/degeneration.hpp); it was not
+  /// kept (retried shorter with FailurePolicy::halve_step, else rolled back).
+  enum class Kind { real_contact, contact_force_active, step_halved, rolled_back, non_finite, degenerated };
   Kind kind;
   double time_s = 0.0;
   Point2 where_m;          ///< place (contact: the interface point nearest the wall)

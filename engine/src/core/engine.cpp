@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/degeneration.hpp"
 #include "core/field_view_builder.hpp"
 #include "core/fsi_system.hpp"
 #include "core/functionals.hpp"
@@ -70,12 +71,14 @@ struct Engine::Impl {
 
   /// Takes the body's rigid motion out of u when its rotation exceeds
   /// numerics.rereference_angle_rad (both levels, the same map; the interface does not move).
-  void rereference_if_turned() {
+  /// True if it did.
+  bool rereference_if_turned() {
     const double limit = scenario.numerics.rereference_angle_rad;
-    if (!(limit > 0.0)) return;
+    if (!(limit > 0.0)) return false;
     const core::RigidFit fit = core::fit_rigid_motion(cut_cur, state.solution);
-    if (fit.nodes == 0 || std::abs(fit.angle_rad) < limit) return;
+    if (fit.nodes == 0 || std::abs(fit.angle_rad) < limit) return false;
     rereference(fit);
+    return true;
   }
 
   void rereference(const core::RigidFit& fit) {
@@ -268,7 +271,32 @@ struct Engine::Impl {
     return r;
   }
 
-  void accept(Eigen::VectorXd&& x, double k, fe::QuadratureTable&& quad_next, StepReport& report) {
+  /// What a step's solution x (on cut_next) would make of the body: the geometry of the
+  /// step after it and the functionals, computed as accept() computes them.
+  struct Outcome {
+    fe::CutData data_next;
+    fe::CutMesh cut_next;
+    Functionals functionals;
+  };
+  Outcome outcome_of(const Eigen::VectorXd& x, const fe::QuadratureTable& quad) const {
+    Outcome o;
+    const BodySpec body = reference_body(state);
+    o.data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_next, buckets, x), cut_options());
+    o.cut_next = fe::build_cut_mesh(mesh, o.data_next);
+    o.functionals = core::compute_functionals(scenario, o.cut_next, cut_next, quad, x);
+    return o;
+  }
+
+  /// Whether x of a step of length k broke the body (core/degeneration.hpp).
+  std::optional<core::Degeneration> degeneration(const Eigen::VectorXd& x, double k, const fe::QuadratureTable& quad,
+                                                 const Outcome& o) const {
+    const core::SolidDeterminant det = core::solid_determinant(cut_next, quad, x);
+    return core::detect_degeneration(state.functionals, o.functionals, k,
+                                     core::largest_cut_patch_side(mesh, cut_next, o.cut_next), det.non_positive,
+                                     {det.where.x(), det.where.y()});
+  }
+
+  void accept(Eigen::VectorXd&& x, double k, fe::QuadratureTable&& quad_next, Outcome&& outcome, StepReport& report) {
     state.previous_solution = std::move(state.solution);
     state.solution = std::move(x);
     state.previous_corner_sign = std::move(state.corner_sign);
@@ -282,12 +310,17 @@ struct Engine::Impl {
     cut_cur = std::move(cut_next);
     quad_cur = std::move(quad_next);  // the step's quadrature becomes the current one: no copy
     const auto t0 = std::chrono::steady_clock::now();
-    rereference_if_turned();
-    const BodySpec body = reference_body(state);
-    data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
-    cut_next = fe::build_cut_mesh(mesh, data_next);
+    if (rereference_if_turned()) {  // the same interface up to rounding, in the new reference
+      const BodySpec body = reference_body(state);
+      data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
+      cut_next = fe::build_cut_mesh(mesh, data_next);
+      state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
+    } else {
+      data_next = std::move(outcome.data_next);
+      cut_next = std::move(outcome.cut_next);
+      state.functionals = outcome.functionals;
+    }
     report.geometry_seconds += seconds_since(t0);
-    state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
     report_contact(report);
   }
 
@@ -341,13 +374,42 @@ struct Engine::Impl {
     // runs through every attempt, so its last entry is the last attempt's, which after
     // accept_best is not the one accepted.
     double kept_first = std::numeric_limits<double>::quiet_NaN(), kept_last = kept_first;
+    std::optional<Outcome> best_outcome;
+    std::optional<core::Degeneration> broken;  // of the latest attempt that broke the body
+    const bool may_halve = scenario.numerics.failure_policy == FailurePolicy::halve_step;
     for (int attempt_no = 0;; ++attempt_no) {
       Eigen::VectorXd x;
       const solve::NewtonResult r = attempt(k, quad, x, report);
       const bool finite = !r.non_finite && x.allFinite();
       report.largest_residual = residual_peak(r);
       report.converged = r.converged && finite;
-      const core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, attempt_no, best_x.size() > 0);
+      core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, attempt_no, best_x.size() > 0);
+      // A solution the step would keep (now, or later as the best attempt) must leave a
+      // sound body: a broken one is retried shorter (halve_step) or rolled back.
+      std::optional<Outcome> outcome;
+      bool this_broke = false;
+      if (verdict.action == core::AttemptAction::accept || verdict.candidate) {
+        const auto t0 = std::chrono::steady_clock::now();
+        outcome = outcome_of(x, quad);
+        std::optional<core::Degeneration> d = degeneration(x, k, quad, *outcome);
+        report.geometry_seconds += seconds_since(t0);
+        if (d) {
+          this_broke = true;
+          report.converged = false;
+          report.events.push_back({StepEvent::Kind::degenerated, state.time_s + k, d->where_m, -1,
+                                   "the solution of a step of " + std::to_string(k) + " s broke the body: " + d->cause});
+          broken = std::move(d);
+          outcome.reset();
+          verdict.candidate = false;
+          verdict.flagged_early = false;
+          if (may_halve && attempt_no < scenario.numerics.max_halvings)
+            verdict.action = core::AttemptAction::retry_halved;
+          else if (may_halve && best_x.size() > 0)
+            verdict.action = core::AttemptAction::accept_best;
+          else
+            verdict.action = core::AttemptAction::give_up;
+        }
+      }
       if (verdict.candidate && r.relative_residual < best_reduction) {
         best_reduction = r.relative_residual;
         best_final = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.back();
@@ -355,6 +417,7 @@ struct Engine::Impl {
         best_x = x;
         best_k = k;
         best_peak = report.largest_residual;
+        best_outcome = outcome;
       }
       if (verdict.action == core::AttemptAction::accept) {
         if (!r.norms.empty()) kept_first = r.norms.front(), kept_last = r.norms.back();
@@ -362,7 +425,7 @@ struct Engine::Impl {
         if (tolerance_m > 0.0 && state.step >= 1)
           report.time_error_m = core::displacement_error_estimate(cut_prev, state.previous_solution, cut_cur,
                                                                   state.solution, cut_next, x, state.time_step_s, k);
-        accept(std::move(x), k, std::move(quad), report);
+        accept(std::move(x), k, std::move(quad), std::move(*outcome), report);
         report.accepted = true;
         state.time_step_limit_s = core::next_time_step_limit(
             {k, attempt_no == 0 && report.converged, r.iterations}, scenario.numerics.time_step_s);
@@ -381,7 +444,8 @@ struct Engine::Impl {
       if (verdict.action == core::AttemptAction::retry_halved) {
         k *= 0.5;
         report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
-                                 "Newton did not converge: retrying with k = " + std::to_string(k)});
+                                 (this_broke ? "the body broke" : "Newton did not converge") +
+                                     std::string(": retrying with k = ") + std::to_string(k)});
         continue;
       }
       const double bound = scenario.numerics.accept_best_max_residual;
@@ -402,21 +466,29 @@ struct Engine::Impl {
         kept_first = best_first, kept_last = best_final;
         k = best_k;
         report.largest_residual = best_peak;
-        accept(std::move(best_x), k, std::move(quad), report);
+        report.converged = false;
+        accept(std::move(best_x), k, std::move(quad), std::move(*best_outcome), report);
         report.accepted = true;
         state.time_step_limit_s = core::next_time_step_limit({k, false, 0}, scenario.numerics.time_step_s);
         break;
       }
-      // give_up: stop_and_rollback, no attempt that moved Newton's iterate, or a
-      // non-finite result (NaN/Inf never leaves the engine).
+      // give_up: stop_and_rollback, no attempt that moved Newton's iterate, a non-finite
+      // result (NaN/Inf never leaves the engine), or a broken body.
       report.accepted = false;
       std::string why = "rolled back to the state before the step";
-      if (finite && !core::made_progress(r) && scenario.numerics.failure_policy != FailurePolicy::stop_and_rollback)
+      if (broken) {
+        std::ostringstream b;
+        b << "the step broke the body (" << broken->cause << ", at (" << broken->where_m.x << ", "
+          << broken->where_m.y << ") m): " << why;
+        why = b.str();
+        policy_note = "the body broke: " + broken->cause;
+      } else if (finite && !core::made_progress(r) && scenario.numerics.failure_policy != FailurePolicy::stop_and_rollback) {
         why = "Newton made no progress (no iterate reduced the residual; accepting would freeze the body): " + why;
+      }
       report.events.push_back({finite ? StepEvent::Kind::rolled_back : StepEvent::Kind::non_finite,
                                state.time_s, {}, -1,
                                finite ? why : "non-finite values: step rejected, state rolled back"});
-      if (finite && !core::made_progress(r)) policy_note = "Newton made no progress";
+      if (!broken && finite && !core::made_progress(r)) policy_note = "Newton made no progress";
       break;
     }
     if (system.max_contact_pressure() > 0.0)

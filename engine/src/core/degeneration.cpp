@@ -1,0 +1,56 @@
+#include "core/degeneration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace fsi::core {
+
+std::optional<Degeneration> detect_degeneration(const Functionals& before, const Functionals& after,
+                                                double time_step_s, double patch_side_m, int inverted_points,
+                                                Point2 inverted_where_m) {
+  char text[240];
+  const Point2 centroid{after.centroid_x_m, after.centroid_y_m};
+  const double values[] = {after.bottom_y_m, after.top_y_m, after.left_x_m, after.right_x_m,
+                           after.mass_error, after.centroid_x_m, after.centroid_y_m};
+  for (double v : values)
+    if (!std::isfinite(v))
+      return Degeneration{"the body's functionals are not finite (no solid left to measure)", centroid};
+  if (inverted_points > 0) {
+    std::snprintf(text, sizeof text, "the solid is turned inside out at %d quadrature point(s), det(I - grad u) <= 0",
+                  inverted_points);
+    return Degeneration{text, inverted_where_m};
+  }
+  const double jump = std::abs(after.mass_error - before.mass_error);
+  if (jump > kMassErrorJump) {
+    std::snprintf(text, sizeof text, "the mass error jumped from %.3g to %.3g in one step (more than %.2g)",
+                  before.mass_error, after.mass_error, kMassErrorJump);
+    return Degeneration{text, centroid};
+  }
+  const double speed = std::max(std::hypot(before.mean_vx_mps, before.mean_vy_mps),
+                                std::hypot(after.mean_vx_mps, after.mean_vy_mps));
+  const double allowed = 2.0 * speed * time_step_s + kInterfaceJumpPatchSides * patch_side_m;
+  const double moved = std::max({std::abs(after.bottom_y_m - before.bottom_y_m), std::abs(after.top_y_m - before.top_y_m),
+                                 std::abs(after.left_x_m - before.left_x_m), std::abs(after.right_x_m - before.right_x_m)});
+  if (moved > allowed) {
+    std::snprintf(text, sizeof text,
+                  "the interface jumped by %.3g m in one step (the body's speed and the mesh allow %.3g m)", moved,
+                  allowed);
+    return Degeneration{text, centroid};
+  }
+  return std::nullopt;
+}
+
+double largest_cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& before, const fe::CutMesh& after) {
+  double side_m = 0.0;
+  for (int p = 0; p < mesh.num_patches(); ++p) {
+    const mesh::Patch& patch = mesh.patches[p];
+    bool at_interface = before.kind[p] != fe::PatchKind::uncut || after.kind[p] != fe::PatchKind::uncut;
+    for (int c : mesh::kCornerLocal)
+      at_interface = at_interface || before.corner_sign[patch.node[c]] == 0 || after.corner_sign[patch.node[c]] == 0;
+    if (at_interface) side_m = std::max(side_m, patch.size_m);
+  }
+  return side_m;
+}
+
+}  // namespace fsi::core

@@ -1,0 +1,50 @@
+#pragma once
+/// \file degeneration.hpp
+/// Whether a step just solved left a body that no longer represents the scenario: a solid
+/// turned inside out, a jump of the mass error, or an interface that jumped further than
+/// the body can move in one step. Such a state is not kept (Engine::step() rolls it back
+/// or retries the step shorter) so that a run stops with a report naming the step, the
+/// cause and the place, rather than going on from a broken state -- a step that Newton
+/// "converged" on a sliver can still do that, and an unconverged one accepted by the
+/// failure policy often does.
+#include <optional>
+#include <string>
+
+#include "fe/cut_mesh.hpp"
+#include "fsi/state.hpp"
+#include "mesh/patch_mesh.hpp"
+
+namespace fsi::core {
+
+/// The mass error may change by at most this much in one step. Example 1's steps change
+/// it by at most 4e-4, in real contact (0 to 4.94 s with the default numerics); a rho_f =
+/// 100 stairs body that accepted unconverged steps had a mass error of 4 two steps later
+/// (NumericsSpec::accept_best_max_residual).
+inline constexpr double kMassErrorJump = 0.02;
+
+/// The interface may move by at most this many patch sides more than the body's speed
+/// explains (2 |v| k, v the larger mean solid velocity of the two levels): the cut
+/// snaps to nodes and moves nodes within a patch, so a sound step can move the discrete
+/// interface by about one side beyond the motion itself.
+inline constexpr double kInterfaceJumpPatchSides = 2.0;
+
+/// What was found; `where_m` is the place (the body's centroid for the whole-body causes,
+/// the first inverted point for an inversion).
+struct Degeneration {
+  std::string cause;
+  Point2 where_m;
+};
+
+/// The checks on the body after a step of `time_step_s` from `before` to `after`.
+/// `inverted_points`: solid quadrature points with det(I - grad u) <= 0 in the new state,
+/// `inverted_where_m` the first of them; `patch_side_m`: the largest patch side the
+/// interface cuts (the scale of the discrete interface's own jitter).
+std::optional<Degeneration> detect_degeneration(const Functionals& before, const Functionals& after,
+                                                double time_step_s, double patch_side_m, int inverted_points,
+                                                Point2 inverted_where_m);
+
+/// The largest side h_P of the patches the interface cuts (or passes through a corner of)
+/// in `before` or `after`; 0 without an interface.
+double largest_cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& before, const fe::CutMesh& after);
+
+}  // namespace fsi::core

@@ -1,0 +1,73 @@
+// The checks that keep a broken body out of a run (core/degeneration.hpp), on constructed
+// functionals: each cause is found and named with its place, and the motions of a sound
+// run (a fall, an impact's turn, a body at rest) pass.
+#include "core/degeneration.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+using fsi::core::detect_degeneration;
+
+/// Example 1's ball, radius 0.2 m, centred at (0, y), falling at vy.
+fsi::Functionals ball(double y, double vy, double mass_error = 1e-3) {
+  fsi::Functionals f;
+  f.centroid_x_m = 0.0;
+  f.centroid_y_m = y;
+  f.bottom_y_m = y - 0.2;
+  f.top_y_m = y + 0.2;
+  f.left_x_m = -0.2;
+  f.right_x_m = 0.2;
+  f.mean_vy_mps = vy;
+  f.mass_error = mass_error;
+  return f;
+}
+
+constexpr double kStep = 2e-3, kPatch = 0.0625;
+
+TEST(Degeneration, SoundMotionsPass) {
+  // A fall at 0.5 m/s over one step, a turn at the ground, a body at rest with the
+  // interface shifted by a patch side (a cut snapping to another node).
+  EXPECT_FALSE(detect_degeneration(ball(0.0, -0.5), ball(-0.001, -0.5), kStep, kPatch, 0, {}));
+  EXPECT_FALSE(detect_degeneration(ball(-0.79, -0.01), ball(-0.79, 0.01), kStep, kPatch, 0, {}));
+  EXPECT_FALSE(detect_degeneration(ball(-0.79, 0.0), ball(-0.79 + kPatch, 0.0), kStep, kPatch, 0, {}));
+  EXPECT_FALSE(detect_degeneration(ball(-0.79, 0.0, 0.004), ball(-0.79, 0.0, 0.02), kStep, kPatch, 0, {}));
+}
+
+TEST(Degeneration, AnInvertedSolidIsNamedWithItsPlace) {
+  const auto d = detect_degeneration(ball(0.0, -0.5), ball(-0.001, -0.5), kStep, kPatch, 3, {0.1, -0.2});
+  ASSERT_TRUE(d);
+  EXPECT_NE(d->cause.find("inside out at 3 quadrature point(s)"), std::string::npos) << d->cause;
+  EXPECT_DOUBLE_EQ(d->where_m.x, 0.1);
+  EXPECT_DOUBLE_EQ(d->where_m.y, -0.2);
+}
+
+TEST(Degeneration, AJumpOfTheMassErrorIsFound) {
+  const auto d = detect_degeneration(ball(-0.79, 0.0, 0.01), ball(-0.79, 0.0, 0.04), kStep, kPatch, 0, {});
+  ASSERT_TRUE(d);
+  EXPECT_NE(d->cause.find("mass error jumped from 0.01 to 0.04"), std::string::npos) << d->cause;
+  EXPECT_DOUBLE_EQ(d->where_m.y, -0.79);  // the body's centroid
+}
+
+TEST(Degeneration, AnInterfaceThatJumpsFurtherThanTheBodyMovesIsFound) {
+  fsi::Functionals after = ball(-0.79, 0.0);
+  after.bottom_y_m -= 3.0 * kPatch;  // the rim pulled through the floor in one step
+  const auto d = detect_degeneration(ball(-0.79, 0.0), after, kStep, kPatch, 0, {});
+  ASSERT_TRUE(d);
+  EXPECT_NE(d->cause.find("interface jumped by 0.188 m"), std::string::npos) << d->cause;
+  // The same distance at a speed that covers it is motion, not a jump.
+  EXPECT_FALSE(detect_degeneration(ball(-0.79, -50.0), after, kStep, kPatch, 0, {}));
+}
+
+TEST(Degeneration, NonFiniteFunctionalsAreABrokenBody) {
+  fsi::Functionals after = ball(-0.79, 0.0);
+  after.mass_error = std::numeric_limits<double>::quiet_NaN();
+  const auto d = detect_degeneration(ball(-0.79, 0.0), after, kStep, kPatch, 0, {});
+  ASSERT_TRUE(d);
+  EXPECT_NE(d->cause.find("not finite"), std::string::npos) << d->cause;
+}
+
+}  // namespace
