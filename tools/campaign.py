@@ -5,6 +5,8 @@
       writes DIR/scenarios/case_NNN.json and DIR/parameters.csv
   campaign.py collect DIR
       writes DIR/summary.csv (and DIR/plot-data.txt for the plot) from DIR/runs/case_NNN/
+  campaign.py check FILE...
+      warns of what in each scenario lies outside the envelope (exit 1 if anything does)
 
 Scenario i of seed S depends on (S, i), the mesh level and the end time only: the same
 seed gives the same files, and a larger count adds cases without changing the first ones.
@@ -207,7 +209,7 @@ def draw_case(seed, index, level, end_time):
     params = {
         "seed": seed, "index": index, "geometry": geometry, "radius_m": radius,
         "center_x_m": cx, "center_y_m": cy, "vx_mps": vx, "vy_mps": vy,
-        "speed_mps": g4(math.hypot(vx, vy)), "mu_s_pa": mu, "lambda_s_pa": g4(4 * mu),
+        "speed_mps": g4(math.hypot(vx, vy)), "mu_s_pa": mu, "lambda_s_pa": g12(4 * mu),
         "density_ratio": g4(rho_s / rho_f), "rho_s_kgpm3": rho_s, "rho_f_kgpm3": rho_f,
         "nu_f_m2ps": nu_f, "gravity_mps2": gravity, "contact": int(contact),
         "gamma_c": gamma_c, "dist0_m": dist0,
@@ -222,7 +224,7 @@ def draw_case(seed, index, level, end_time):
         "gravity_mps2": [0, -gravity],
         "body": {"center_m": [cx, cy], "radius_m": radius, "initial_velocity_mps": [vx, vy]},
         "fluid": {"density_kgpm3": rho_f, "viscosity_m2ps": nu_f},
-        "solid": {"density_kgpm3": rho_s, "mu_pa": mu, "lambda_pa": g4(4 * mu)},
+        "solid": {"density_kgpm3": rho_s, "mu_pa": mu, "lambda_pa": g12(4 * mu)},
         "contact": {"gamma_c": gamma_c, "dist0_m": dist0},
         "numerics": {"time_step_s": k, "end_time_s": end_time},
     }
@@ -396,6 +398,97 @@ def command_collect(args):
     print("outcomes: " + ", ".join("%s %d" % kv for kv in sorted(counts.items())))
 
 
+# --- checking a scenario against the envelope ------------------------------------------
+def mesh_bounds(mesh):
+    xs, ys = [], []
+    for block in mesh.get("blocks", []):
+        if block.get("mapped"):
+            for x, y in block.get("corners", []):
+                xs.append(x)
+                ys.append(y)
+        else:
+            for p in block.get("x", []):
+                xs += [p["from_m"], p["to_m"]]
+            for p in block.get("y", []):
+                ys += [p["from_m"], p["to_m"]]
+    return (min(xs), max(xs), min(ys), max(ys)) if xs and ys else None
+
+
+def envelope_problems(scenario):
+    """What of a scenario lies outside the envelope (an empty list: nothing)."""
+    problems = []
+    body = scenario.get("body", {})
+    solid = scenario.get("solid", {})
+    fluid = scenario.get("fluid", {})
+    radius = body.get("radius_m", 0.4)
+    mu = solid.get("mu_pa", 2e5)
+    lam = solid.get("lambda_pa", 8e5)
+    rho_s = solid.get("density_kgpm3", 1000.0)
+    rho_f = fluid.get("density_kgpm3", 1000.0)
+    nu_f = fluid.get("viscosity_m2ps", 1e-3)
+    gx, gy = scenario.get("gravity_mps2", [0.0, -0.5])
+    vx, vy = body.get("initial_velocity_mps", [0.0, 0.0])
+    cx, cy = body.get("center_m", [0.0, 0.0])
+
+    def within(name, value, lo, hi, unit=""):
+        if not lo * (1 - 1e-9) <= value <= hi * (1 + 1e-9):
+            problems.append("%s = %g%s is outside [%g, %g]" % (name, value, unit, lo, hi))
+
+    if scenario.get("method", "fsi") != "fsi":
+        problems.append('method "%s": the envelope is that of the default numerics ("fsi")'
+                        % scenario.get("method"))
+    other = sorted(set(scenario.get("numerics", {})) - {"time_step_s", "end_time_s"})
+    if other:
+        problems.append("numerics keys other than the step and the end time: " + ", ".join(other))
+    within("radius", radius, *RADIUS_M, unit=" m")
+    within("mu_s", mu, *MU_PA, unit=" Pa")
+    if abs(lam - 4 * mu) > 1e-6 * 4 * mu:
+        problems.append("lambda_s = %g Pa is not 4 mu_s = %g Pa" % (lam, 4 * mu))
+    within("rho_s / rho_f", rho_s / rho_f, *DENSITY_RATIO)
+    within("rho_f", rho_f, *RHO_F_KGPM3, unit=" kg/m^3")
+    within("nu_f", nu_f, *NU_F_M2PS, unit=" m^2/s")
+    within("|gravity|", math.hypot(gx, gy), *GRAVITY_MPS2, unit=" m/s^2")
+    if abs(gx) > 1e-12 or gy >= 0:
+        problems.append("gravity [%g, %g] does not point straight down" % (gx, gy))
+    speed = math.hypot(vx, vy)
+    within("start speed", speed, *SPEED_MPS, unit=" m/s")
+    if speed > 0 and -vy < speed * math.cos(math.radians(SPEED_ANGLE_DEG)) - 1e-12:
+        problems.append("start velocity [%g, %g] is more than %g degrees from straight down"
+                        % (vx, vy, SPEED_ANGLE_DEG))
+    bounds = mesh_bounds(scenario.get("mesh", {"blocks": [{"x": [{"from_m": -1, "to_m": 1}],
+                                                           "y": [{"from_m": -1, "to_m": 0.5}]}]}))
+    if bounds:
+        x0, x1, y0, y1 = bounds
+        if x0 < BOX_X[0] - 1e-9 or x1 > BOX_X[1] + 1e-9 or y0 < BOX_Y[0] - 1e-9 or y1 > BOX_Y[1] + 1e-9:
+            problems.append("the domain [%g, %g] x [%g, %g] m is larger than Example 1's box" % bounds)
+        reach = radius + CLEARANCE_M
+        if not (x0 + reach <= cx + 1e-9 and cx <= x1 - reach + 1e-9 and y0 + reach <= cy + 1e-9
+                and cy <= y1 - reach + 1e-9):
+            problems.append("the ball starts closer than %g m to the domain's boundary" % CLEARANCE_M)
+    walls = scenario.get("walls", [[[-1, -1], [1, -1]]])
+    if any(segment_distance((cx, cy), a, b) < radius + CLEARANCE_M - 1e-9 for a, b in walls):
+        problems.append("the ball starts closer than %g m to a wall" % CLEARANCE_M)
+    return problems
+
+
+def command_check(args):
+    bad = 0
+    for path in args.files:
+        try:
+            with open(path) as f:
+                scenario = json.load(f)
+        except (OSError, ValueError) as e:
+            print("%s: cannot read: %s" % (path, e), file=sys.stderr)
+            sys.exit(2)
+        problems = envelope_problems(scenario)
+        for p in problems:
+            print("%s: warning: outside the envelope: %s" % (path, p))
+        if not problems:
+            print("%s: inside the envelope" % path)
+        bad |= bool(problems)
+    sys.exit(1 if bad else 0)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     sub = parser.add_subparsers(dest="command", required=True)
@@ -407,8 +500,10 @@ def main():
     d.add_argument("--mesh-level", type=int, required=True)
     c = sub.add_parser("collect")
     c.add_argument("dir")
+    k = sub.add_parser("check")
+    k.add_argument("files", nargs="+")
     args = parser.parse_args()
-    {"draw": command_draw, "collect": command_collect}[args.command](args)
+    {"draw": command_draw, "collect": command_collect, "check": command_check}[args.command](args)
 
 
 if __name__ == "__main__":

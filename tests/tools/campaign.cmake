@@ -2,7 +2,8 @@
 #  - a short campaign: 3 scenarios on the coarsest mesh (level 0, k = 4e-3 s) to t = 0.012 s (a few steps):
 #    summary.csv has the header and one row per scenario, each finished, and the plot;
 #  - the same seed draws the same scenario files and parameters, another seed others;
-#    every scenario holds physics, mesh, time step and end time only;
+#    every scenario holds physics, mesh, time step and end time only, and --check finds it
+#    inside the envelope (the shipped stairs outside);
 #  - the outcomes with a stub fsi-movie: a run killed by a signal is "crashed", one that
 #    exits 1 without a stop report is "crashed", one past its --timeout is "stopped";
 #  - --slurm writes an array script and a collect script that pass bash -n.
@@ -19,6 +20,7 @@ function(run_campaign want)
   if(NOT _rc EQUAL want)
     message(FATAL_ERROR "campaign ${ARGN}: exit ${_rc}, want ${want}")
   endif()
+  set(_out "${_out}${_err}" PARENT_SCOPE)
 endfunction()
 
 # summary_rows(DIR VAR): the data rows of DIR/summary.csv; checks the header.
@@ -79,6 +81,14 @@ foreach(_i 000 001 002)
     message(FATAL_ERROR "case_${_i} sets a method: ${_method}")
   endif()
 endforeach()
+
+# --- --check: the drawn scenarios lie inside the envelope, the shipped stairs do not -----
+run_campaign(0 --check ${_dir}/a/scenarios/case_000.json ${_dir}/a/scenarios/case_001.json
+             ${_dir}/a/scenarios/case_002.json ${SOURCE_DIR}/assets/scenarios/ball_drop.json)
+run_campaign(1 --check ${SOURCE_DIR}/assets/scenarios/stairs/stairs_rho100.json)
+if(NOT _out MATCHES "rho_s / rho_f = 10 is outside")
+  message(FATAL_ERROR "--check does not name the density ratio: ${_out}")
+endif()
 
 # --- the outcomes, with a stub engine --------------------------------------------------
 # case_000: a finished run; case_001: killed by SIGSEGV; case_002: hangs (--timeout 2).
