@@ -1,6 +1,7 @@
 # tools/campaign:
-#  - a short campaign: 3 scenarios on the coarsest mesh (level 0, k = 4e-3 s) to t = 0.012 s (a few steps):
-#    summary.csv has the header and one row per scenario, each finished, and the plot;
+#  - a short campaign: 3 scenarios on the coarsest mesh (level 0, k = 4e-3 s) to
+#    t = 0.012 s (a few steps): summary.csv has the header and one row per scenario, each finished, and the plot; a
+#    second call reuses the runs, but continues one whose record says it was interrupted;
 #  - the same seed draws the same scenario files and parameters, another seed others;
 #    every scenario holds physics, mesh, time step and end time only, and --check finds it
 #    inside the envelope (the shipped stairs outside);
@@ -48,6 +49,20 @@ foreach(_row IN LISTS _rows)
     message(FATAL_ERROR "not a finished run of seed 7: ${_row}")
   endif()
 endforeach()
+# A run stopped by a signal (here: its record says so) goes on from its latest checkpoint;
+# the others are reused.
+file(READ ${_dir}/a/runs/case_000/campaign-run.txt _record)
+string(REPLACE "exit_code=0" "exit_code=130" _record "${_record}")
+file(WRITE ${_dir}/a/runs/case_000/campaign-run.txt "${_record}")
+run_campaign(0 --count 3 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/a)
+if(NOT _out MATCHES "case_000: continuing" OR NOT _out MATCHES "case_001: reusing")
+  message(FATAL_ERROR "the interrupted run did not go on, or another did: ${_out}")
+endif()
+summary_rows(${_dir}/a _again)
+list(GET _again 0 _r0)
+if(NOT _r0 MATCHES ",finished,0\\.01[0-9]*,")
+  message(FATAL_ERROR "the continued run did not finish: ${_r0}")
+endif()
 find_program(GNUPLOT gnuplot)
 if(GNUPLOT AND NOT EXISTS ${_dir}/a/outcomes.png)
   message(FATAL_ERROR "no outcomes.png")
@@ -91,22 +106,25 @@ if(NOT _out MATCHES "rho_s / rho_f = 10 is outside")
 endif()
 
 # --- the outcomes, with a stub engine --------------------------------------------------
-# case_000: a finished run; case_001: killed by SIGSEGV; case_002: hangs (--timeout 2).
+# case_000: a finished run; case_001: killed by SIGSEGV; case_002: hangs (--timeout 2);
+# case_003: exits 1 without a summary.
 set(_movie ${_dir}/stub-movie)
 file(WRITE ${_movie} "#!/usr/bin/env bash
 case \"$1\" in
   *case_000.json) printf '{\"final\": true, \"stop_reason\": \"\", \"steps\": 2, \"simulated_time_s\": 0.008, \"unconverged_steps\": 0, \"min_distance\": {\"distance_m\": 0.1}}' > \"$2/summary.json\"
                   printf 'time_s,mass_error\\n0.004,1e-3\\n0.008,-2e-3\\n' > \"$2/functionals.csv\" ;;
   *case_001.json) echo 'about to fail' >&2; kill -SEGV $$ ;;
+  *case_003.json) echo 'fsi-movie: broken' >&2; exit 1 ;;
   *) exec sleep 20 ;;
 esac
 ")
 file(CHMOD ${_movie} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
-run_campaign(0 --count 3 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2 --jobs 3)
+run_campaign(0 --count 4 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2 --jobs 4)
 summary_rows(${_dir}/stub _rows)
 list(GET _rows 0 _r0)
 list(GET _rows 1 _r1)
 list(GET _rows 2 _r2)
+list(GET _rows 3 _r3)
 if(NOT _r0 MATCHES ",finished,0\\.008,2,0,0\\.1,0\\.002,[0-9.]+,\"\"$")
   message(FATAL_ERROR "case 0 (finished): ${_r0}")
 endif()
@@ -116,10 +134,13 @@ endif()
 if(NOT _r2 MATCHES ",stopped,.*,\"timeout after 2 s\"$")
   message(FATAL_ERROR "case 2 (timeout): ${_r2}")
 endif()
+if(NOT _r3 MATCHES ",crashed,.*,\"exit 1: fsi-movie: broken\"$")
+  message(FATAL_ERROR "case 3 (exit 1): ${_r3}")
+endif()
 # A run is reused while its scenario is unchanged: the engine is not asked again.
 file(READ ${_dir}/stub/summary.csv _first)
 file(WRITE ${_movie} "#!/usr/bin/env bash\necho 'asked again' >&2\nexit 1\n")
-run_campaign(0 --count 3 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2)
+run_campaign(0 --count 4 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2)
 file(READ ${_dir}/stub/summary.csv _again)
 if(NOT _first STREQUAL _again)
   message(FATAL_ERROR "the runs were not reused:\n${_first}\n${_again}")
