@@ -77,6 +77,7 @@ def piece(a, b, n, first=0.0, last=0.0, scale=1.0, origin=0.0):
 
 
 def g12(x):
+    """A number rounded to 12 significant digits (mesh coordinates without float noise)."""
     return float("%.12g" % x)
 
 
