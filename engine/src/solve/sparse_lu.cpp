@@ -43,6 +43,21 @@ bool SparseLU::factorize(const Matrix& a) {
   // Nested dissection (METIS through CHOLMOD) suits the 2D grid graph: on the 4225-node
   // FSI pattern it needs 2.3x fewer flops than the default AMD ordering.
   control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+  // The symmetric strategy (METIS on A+A^T, diagonal pivots preferred) is what UMFPACK's
+  // automatic choice picks for these Jacobians; stating it keeps that choice fixed. The
+  // unsymmetric one needs 1.7x the flops (1.53G vs 0.90G on Example 1's Jacobian).
+  control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+  // Take the diagonal entry as pivot unless it is below 1e-8 of its column's largest
+  // (after UMFPACK's row scaling) instead of below 1e-3 (the default). On Example 1's
+  // Jacobians (4225 nodes) the default rejected 275-320 diagonal pivots; each off-diagonal
+  // pivot breaks the fill pattern METIS planned for. With 1e-8 none is rejected: 0.65G
+  // instead of 0.90G flops, 3.67M instead of 4.12M entries in L+U, a numeric factorization
+  // 15-20 % cheaper (1.25-1.36 instead of 1.50-1.60 reference factorizations, UMFPACK
+  // alone on the saved Jacobians, glibc keeping large blocks in the heap), and no less
+  // accurate: for x = A^-1 (A x_true), max|x - x_true| / max|x_true| 1.1e-7 to 6.6e-7
+  // against 5.6e-7 to 1.7e-6, residual 7e-16 to 1e-15 against 6e-15 to 2e-14, UMFPACK's
+  // rcond estimate 100x larger. (1e-4 still rejected ~150 pivots, 1e-6 ~65.)
+  control[UMFPACK_SYM_PIVOT_TOLERANCE] = 1e-8;
   free_numeric();
   if (!same_pattern) {
     free_symbolic();
