@@ -5,7 +5,9 @@
 /// The element residuals are written once, templated on the scalar; evaluated with
 /// Dual<N> (N = local unknowns of one sub-element, at most 4 nodes x 5 fields = 20)
 /// they give the exact element Jacobian, row by row, with no hand derivation to get
-/// wrong. tests/unit/fsi_jacobian_test.cpp checks it against finite differences.
+/// wrong. tests/unit/fsi_jacobian_test.cpp checks it against finite differences. Fluid
+/// sub-elements off the open boundary, the bulk of the mesh, use a hand-derived Jacobian
+/// checked against this one (forms/fluid_element_jacobian.hpp): it costs far less.
 #include <array>
 #include <cmath>
 

@@ -6,6 +6,7 @@
 #include "core/contact_distance.hpp"
 #include "core/initial_guess.hpp"
 #include "core/parallel_chunks.hpp"
+#include "forms/fluid_element_jacobian.hpp"
 #include "forms/pressure_stabilization.hpp"
 #include "fsi/state.hpp"
 #include "mesh/patch_colouring.hpp"
@@ -255,6 +256,10 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
   // same order whatever the number of threads.
   const auto assemble_patches = [&](const std::vector<int>& patches, int begin, int end) {
     std::array<Scalar, forms::kMaxLocal> xl, rl;
+    // Fluid sub-elements off the open boundary: the residual in double and the
+    // Jacobian by hand (forms/fluid_element_jacobian.hpp), with the same residual bits.
+    std::array<double, forms::kMaxLocal> xd, rd;
+    forms::ElementMatrix kd;
     double* values = kJacobian ? jacobian->valuePtr() : nullptr;
     for (int i = begin; i < end; ++i) {
       const int p = patches[i];
@@ -272,6 +277,24 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
         for (int a = 0; a < e.vertices; ++a) {
           in.u_row_solid[a] = cut.touches_solid[e.node[a]];
           in.p_row_fluid[a] = cut.touches_fluid[e.node[a]];
+        }
+        if constexpr (kJacobian) {
+          if (forms::has_hand_jacobian(in)) {
+            for (int a = 0; a < e.vertices; ++a)
+              for (int f = 0; f < kFieldsPerNode; ++f) xd[kFieldsPerNode * a + f] = x[kFieldsPerNode * e.node[a] + f];
+            for (int l = nl; l < forms::kMaxLocal; ++l) xd[l] = 0.0;
+            forms::element_residual<double>(in, coefficients_, xd, rd);
+            forms::fluid_element_jacobian(in, coefficients_, xd, kd);
+            for (int l = 0; l < nl; ++l) {
+              r[kFieldsPerNode * e.node[l / kFieldsPerNode] + l % kFieldsPerNode] += rd[l];
+              const int* idx = entry_.data() + entry_first_[k] + l * nl;
+              for (int j = 0; j < nl; ++j)
+                if (idx[j] >= 0) values[idx[j]] += kd[l][j];
+            }
+            continue;
+          }
+        }
+        for (int a = 0; a < e.vertices; ++a) {
           for (int f = 0; f < kFieldsPerNode; ++f) {
             const double value = x[kFieldsPerNode * e.node[a] + f];
             if constexpr (kJacobian) xl[kFieldsPerNode * a + f] = Scalar::variable(value, kFieldsPerNode * a + f);
