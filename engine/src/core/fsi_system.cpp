@@ -340,6 +340,17 @@ void FsiSystem::residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd&
   assemble<true>(x, r, &jacobian);
 }
 
+void FsiSystem::extension_unknowns(std::vector<char>& extension) const {
+  extension.assign(pattern_.rows(), 0);
+  if (cut_ == nullptr) return;
+  const std::size_t nodes = std::min(cut_->touches_solid.size(), extension.size() / kFieldsPerNode);
+  for (std::size_t node = 0; node < nodes; ++node) {
+    char* e = extension.data() + kFieldsPerNode * node;
+    e[kUx] = e[kUy] = !cut_->touches_solid[node];
+    e[kP] = !cut_->touches_fluid[node];
+  }
+}
+
 int FsiSystem::inverted_solid_points(const Eigen::VectorXd& x) const {
   if (cut_ == nullptr || quadrature_ == nullptr) return 0;
   return solid_determinant(*cut_, *quadrature_, x).non_positive;

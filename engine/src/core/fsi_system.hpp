@@ -43,6 +43,11 @@ class FsiSystem {
   void residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& r,
                              solve::SparseMatrix& jacobian) const;
 
+  /// Marks the unknowns whose rows only extend a field beyond its domain (u at nodes that
+  /// touch no solid sub-element, p at nodes that touch no fluid one): no other row
+  /// depends on them, so the LU can take them after the rest (solve/split_lu.hpp).
+  void extension_unknowns(std::vector<char>& extension) const;
+
   /// How many solid quadrature points x deforms past inversion, det(I - grad u) <= 0
   /// (J = 1/det(I - grad u) would be negative or infinite). Newton's line search refuses
   /// an update that adds any: St. Venant-Kirchhoff has no barrier against inversion, the

@@ -20,7 +20,7 @@
 #include <Eigen/Core>
 
 #include "core/fsi_system.hpp"
-#include "solve/sparse_lu.hpp"
+#include "solve/split_lu.hpp"
 
 namespace fsi::solve {
 
@@ -67,7 +67,7 @@ class NewtonSolver {
   /// Solves R(x) = 0 starting from x (updated in place).
   NewtonResult solve(const core::FsiSystem& system, Eigen::VectorXd& x, const NewtonOptions& options);
   /// Forget the factorization.
-  void reset() { lu_ = std::make_unique<SparseLU>(); }
+  void reset() { lu_ = std::make_unique<SplitLU>(); }
   /// Assembles the Jacobian at x and factorizes it (used to restore a saved state's
   /// factorization exactly). Returns false if it is singular or not finite.
   bool factorize_at(const core::FsiSystem& system, const Eigen::VectorXd& x);
@@ -88,7 +88,8 @@ class NewtonSolver {
                        NewtonResult& result, Eigen::VectorXd& dx);
 
   SparseMatrix jacobian_;
-  std::unique_ptr<SparseLU> lu_ = std::make_unique<SparseLU>();
+  std::unique_ptr<SplitLU> lu_ = std::make_unique<SplitLU>();
+  std::vector<char> extension_;  ///< the system's extension unknowns (SplitLU)
   Eigen::VectorXd row_scale_;
 };
 

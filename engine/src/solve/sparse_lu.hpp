@@ -1,10 +1,11 @@
 #pragma once
 /// \file sparse_lu.hpp
-/// Sparse LU through UMFPACK with the symbolic analysis done once.
+/// Sparse LU through UMFPACK with the symbolic analysis reused while the pattern stays.
 ///
 /// The locally modified FE space keeps its DoFs and its sparsity pattern whatever the
-/// interface does, so the (expensive) fill-reducing ordering and symbolic analysis are
-/// computed for the first matrix and reused for every later numeric factorization.
+/// interface does, so the fill-reducing ordering and symbolic analysis of the whole
+/// Jacobian are computed once; the blocks of solve/split_lu.hpp change pattern when the
+/// interface passes a node, and are analysed again then.
 #include <Eigen/SparseCore>
 
 namespace fsi::solve {
