@@ -85,7 +85,7 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
   bool fresh = false;         // the factorization held was built at the current iterate
   bool own_lu = false;        // ... or at least in this call (not at another step's geometry)
   bool jacobian_at_x = false; // jacobian_ holds the Jacobian at the current iterate
-  if (!lu_->factorized()) {
+  if (!lu_->factorized() || (!options.reuse_across_steps && !krylov)) {
     if (!refactorize(system, x, r, result)) return result;
     fresh = own_lu = jacobian_at_x = true;
   } else if (krylov) {

@@ -29,6 +29,9 @@ struct NewtonOptions {
   double rel_tol = 1e-8;
   double abs_tol = 1e-10;
   double reuse_contraction = 0.2;
+  /// Whether a factorization of an earlier step may serve this step's first chord steps.
+  /// false: the step factorizes at its start (the engine's choice in real contact).
+  bool reuse_across_steps = true;
   /// > 0: where a new Jacobian is needed, solve it by GMRES preconditioned with the
   /// factorization held, up to this many iterations, and refactorize only if that fails
   /// (solve/gmres.hpp). 0: refactorize.
