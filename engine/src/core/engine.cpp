@@ -13,6 +13,7 @@
 #include "core/fsi_system.hpp"
 #include "core/functionals.hpp"
 #include "core/initial_guess.hpp"
+#include "core/parallel_chunks.hpp"
 #include "core/rereference.hpp"
 #include "core/step_policy.hpp"
 #include "core/time_error_estimate.hpp"
@@ -157,6 +158,7 @@ struct Engine::Impl {
     mo.eps_patches = scenario.numerics.blend_eps_patches;
     mo.delta_patches = scenario.numerics.blend_delta_patches;
     mo.identity_gap_m = scenario.numerics.identity_gap_m;
+    mo.threads = core::resolve_threads(scenario.numerics.assembly_threads);
     return mo;
   }
 

@@ -28,6 +28,7 @@ struct MappingOptions {
   double k_s = 1e-3;
   double eps_patches = 1.5, delta_patches = 3.0;
   double identity_gap_m = 0.0;  ///< fluid points closer to a wall: T = id (0: the patch's shorter side)
+  int threads = 1;              ///< threads of the point loop (the result does not depend on it)
 };
 
 struct MappingStats {
