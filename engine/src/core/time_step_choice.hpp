@@ -42,11 +42,6 @@ namespace fsi::core {
 /// A long step may cover at most this fraction (its inverse) of the way to the wall zone.
 inline constexpr double kStepsToWallZone = 4.0;
 
-/// A body whose interface comes this close to a wall [m] is in real contact: an interface
-/// through a wall node measures 1e-17 to 5e-17 m, the rounding of the node's coordinates
-/// (Example 1 at rest from t = 4.65 s), and a test for exactly 0 kept that ball at k.
-inline constexpr double kRealContactDistance_m = 1e-12;
-
 /// In the wall zone a longer step may move the interface by only this part of what
 /// time_step_patch_fraction allows elsewhere. A ball rolling on tread 1 at 0.19 m/s in
 /// steps of 4e-3 s (0.77 mm, 1/8 of the 6 mm rows it cut) met cut changes that k takes in
