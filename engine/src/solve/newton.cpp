@@ -52,7 +52,6 @@ bool NewtonSolver::factorize_assembled(const Eigen::VectorXd& x, NewtonResult& r
 
 bool NewtonSolver::refactorize(const core::FsiSystem& system, const Eigen::VectorXd& x,
                                Eigen::VectorXd& r, NewtonResult& result) {
-  system.extension_unknowns(extension_);
   assemble_jacobian(system, x, r, result);
   scale_rows_by_jacobian();
   return factorize_assembled(x, result);
@@ -61,6 +60,7 @@ bool NewtonSolver::refactorize(const core::FsiSystem& system, const Eigen::Vecto
 bool NewtonSolver::factorize_at(const core::FsiSystem& system, const Eigen::VectorXd& x) {
   NewtonResult ignored;
   Eigen::VectorXd r;
+  system.extension_unknowns(extension_);  // of this geometry, as solve() takes them
   return refactorize(system, x, r, ignored);
 }
 
