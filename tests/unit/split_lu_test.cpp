@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
 
 namespace {
@@ -81,6 +82,27 @@ TEST(SplitLU, FactorizesTheWholeMatrixWhenACoupledRowSeesAnExtensionUnknown) {
   ASSERT_TRUE(split.factorize(a, extension));
   EXPECT_TRUE(split.split());
   EXPECT_LT((a * split.solve(b) - b).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(SplitLU, TwoThreadsGiveTheSameBitsAsOne) {
+  const int n = 3000;
+  const std::vector<char> extension = every_third(n);
+  const Matrix a = block_lower_triangular(n, extension, 5);
+  fsi::solve::SplitLU one, two;
+  ASSERT_TRUE(one.factorize(a, extension, 1));
+  ASSERT_TRUE(two.factorize(a, extension, 2));
+  ASSERT_TRUE(two.split());
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  const Eigen::VectorXd x1 = one.solve(b), x2 = two.solve(b);
+  EXPECT_EQ(0, std::memcmp(x1.data(), x2.data(), sizeof(double) * n));
+  EXPECT_LT((a * x2 - b).cwiseAbs().maxCoeff(), 1e-12);
+  // A singular extension block is reported from its thread as from the caller's.
+  Matrix singular = a;
+  for (int j = 0; j < n; ++j)
+    for (Matrix::InnerIterator it(singular, j); it; ++it)
+      if (extension[it.row()]) it.valueRef() = 0.0;
+  EXPECT_FALSE(two.factorize(singular, extension, 2));
+  EXPECT_FALSE(one.factorize(singular, extension, 1));
 }
 
 TEST(SplitLU, WithoutExtensionUnknownsItIsThePlainLU) {

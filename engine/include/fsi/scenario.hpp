@@ -155,10 +155,11 @@ struct NumericsSpec {
   /// when that does not converge (advanced; ours; 0: refactorize every time). A
   /// factorization of the stairs' 71k unknowns costs about 80 solves with one.
   int krylov_iterations = 0;
-  /// Threads of the element loops (advanced; residual and Jacobian assembly, old values at
-  /// T_m); 0: the machine's hardware threads, at most 8. A solver control: the results are
-  /// bit-identical for every thread count (patches are assembled in groups that share no
-  /// node; each old value is computed on its own).
+  /// Threads of the element loops and the factorization (advanced; residual and Jacobian
+  /// assembly, old values at T_m, the LU's two blocks at the same time); 0: the machine's
+  /// hardware threads, at most 8. A solver control: the results are bit-identical for
+  /// every thread count (patches are assembled in groups that share no node; each old
+  /// value is computed on its own; the two blocks are independent LUs).
   int assembly_threads = 0;
   /// What to do with a step Newton did not solve within its budget, or whose solution
   /// broke the body (advanced; FailurePolicy; the chapter's method: accept_and_flag).

@@ -251,6 +251,7 @@ struct Engine::Impl {
     no.abs_tol = scenario.numerics.newton_abs_tol;
     no.reuse_contraction = scenario.numerics.reuse_contraction;
     no.krylov_max_iterations = scenario.numerics.krylov_iterations;
+    no.lu_threads = core::resolve_threads(scenario.numerics.assembly_threads);
     // In real contact the cut changes from step to step by slivers beside the wall nodes
     // the body holds, and the previous step's factorization starts Newton off at residuals
     // up to 6.6e6: 120 steps of Example 1 from t = 4.782 s took 3.45 iterations and 1.65

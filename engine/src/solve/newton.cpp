@@ -42,7 +42,7 @@ bool NewtonSolver::factorize_assembled(const Eigen::VectorXd& x, NewtonResult& r
     return false;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const bool ok = lu_->factorize(jacobian_, extension_);
+  const bool ok = lu_->factorize(jacobian_, extension_, lu_threads_);
   result.factorization_seconds += seconds_since(t0);
   ++result.factorizations;
   result.factorization_point = x;
@@ -81,6 +81,7 @@ NewtonResult NewtonSolver::solve(const core::FsiSystem& system, Eigen::VectorXd&
   NewtonResult result;
   Eigen::VectorXd r, r_try, x_try;
   const bool krylov = options.krylov_max_iterations > 0;
+  lu_threads_ = options.lu_threads;
   system.extension_unknowns(extension_);
   bool fresh = false;         // the factorization held was built at the current iterate
   bool own_lu = false;        // ... or at least in this call (not at another step's geometry)

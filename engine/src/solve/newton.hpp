@@ -40,6 +40,9 @@ struct NewtonOptions {
   /// The tightest GMRES tolerance (relative to the weighted residual it starts from);
   /// each iteration asks only for what reaches Newton's tolerance, up to 1e-2.
   double krylov_rel_tol = 1e-6;
+  /// Threads of the factorization (SplitLU::factorize: >= 2 factorizes its two blocks at
+  /// the same time). The factors, and so every iterate, are the same bits for any count.
+  int lu_threads = 1;
 };
 
 struct NewtonResult {
@@ -95,6 +98,7 @@ class NewtonSolver {
   std::unique_ptr<SplitLU> lu_ = std::make_unique<SplitLU>();
   std::vector<char> extension_;  ///< the system's extension unknowns (SplitLU)
   Eigen::VectorXd row_scale_;
+  int lu_threads_ = 1;  ///< NewtonOptions::lu_threads of the latest solve()
 };
 
 }  // namespace fsi::solve

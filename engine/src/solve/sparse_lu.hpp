@@ -22,7 +22,17 @@ class SparseLU {
   /// Numeric factorization of `a` (compressed). The first call, or a call with a
   /// different pattern (size / nonzero count), also runs the symbolic analysis.
   /// Returns false if UMFPACK reports a singular or failed factorization.
-  bool factorize(const Matrix& a);
+  bool factorize(const Matrix& a) { return analyze(a) && factorize_analyzed(); }
+  /// The first half of factorize(): takes a copy of `a` and runs the symbolic analysis
+  /// if its pattern is new. Returns false if the analysis fails.
+  ///
+  /// Not to be run on two threads at once: the METIS ordering inside is not safe for
+  /// that (two SparseLUs analysed concurrently got other orderings, hence other bits,
+  /// than analysed one after the other: SplitLU.TwoThreadsGiveTheSameBitsAsOne).
+  bool analyze(const Matrix& a);
+  /// The second half: the numeric factorization of the matrix analyze() took. Two
+  /// SparseLUs may run this at the same time.
+  bool factorize_analyzed();
   /// Solves A x = b with the last factorization. Requires a successful factorize().
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 

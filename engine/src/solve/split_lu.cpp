@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cstring>
+#include <thread>
 
 namespace fsi::solve {
 namespace {
@@ -93,7 +94,7 @@ bool SplitLU::gather_values(const Matrix& a) {
   return true;
 }
 
-bool SplitLU::factorize(const Matrix& a, const std::vector<char>& extension) {
+bool SplitLU::factorize(const Matrix& a, const std::vector<char>& extension, int threads) {
   assert(a.isCompressed() && a.rows() == a.cols());
   bool any_extension = false;
   if (static_cast<Eigen::Index>(extension.size()) == a.rows())
@@ -104,7 +105,21 @@ bool SplitLU::factorize(const Matrix& a, const std::vector<char>& extension) {
     split_ = gather_values(a);
   }
   if (!split_) return whole_.factorize(a);
-  return coupled_.factorize(a_cc_) && extension_.factorize(a_ee_);
+  if (threads < 2) {
+    const bool coupled_ok = coupled_.factorize(a_cc_);
+    return coupled_ok && extension_.factorize(a_ee_);
+  }
+  // The extension block is the smaller one (on Example 1 7917 unknowns against 13208,
+  // 0.016-0.02 s of UMFPACK against 0.06-0.095 s): it finishes while the coupled block is
+  // still being factorized, and the two LUs share nothing (UMFPACK keeps its state in
+  // its own objects; OpenBLAS serializes nothing at one thread per call).
+  // The analyses (where a pattern is new) one after the other: see SparseLU::analyze.
+  if (!coupled_.analyze(a_cc_) || !extension_.analyze(a_ee_)) return false;
+  bool extension_ok = false;
+  std::thread worker([&] { extension_ok = extension_.factorize_analyzed(); });
+  const bool coupled_ok = coupled_.factorize_analyzed();
+  worker.join();
+  return coupled_ok && extension_ok;
 }
 
 Eigen::VectorXd SplitLU::solve(const Eigen::VectorXd& b) const {

@@ -34,7 +34,10 @@ class SplitLU {
 
   /// Factorizes `a` (compressed, square). extension[i] != 0 marks unknown i (row and
   /// column) as an extension unknown. Returns false if a block (or the whole) is singular.
-  bool factorize(const Matrix& a, const std::vector<char>& extension);
+  /// threads >= 2: the two blocks are factorized at the same time, the extension block on
+  /// a thread of its own. They are independent LUs, so the factors are the same bits
+  /// whatever the thread count.
+  bool factorize(const Matrix& a, const std::vector<char>& extension, int threads = 1);
   /// Solves A x = b with the last factorization. Requires a successful factorize().
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
