@@ -19,8 +19,12 @@ bool finite(const fsi::Functionals& f) {
 
 TEST(RealContact, IsReportedAndTheRunContinues) {
   fsi::Scenario s = fsi::testing::coarse_example1();
-  s.body.center_m = {0.0, -1.0 + s.body.radius_m + 2e-3};  // 2 mm above the ground
-  s.body.initial_velocity_mps = {0.0, -1.0};                // 1 cm per step of 0.01 s
+  // 1 mm above the ground at 0.5 m/s, in the potential flow it drives: the film under it
+  // slows it to about 0.1 m/s when it touches at the 7th step. (From 2 mm at 1 m/s the
+  // film holds it 3 mm above the ground; pressed through it at 0.5 m/s or more, the
+  // chapter's numerics do not converge after the touch.)
+  s.body.center_m = {0.0, -1.0 + s.body.radius_m + 1e-3};
+  s.body.initial_velocity_mps = {0.0, -0.5};
   s.contact = {};                                           // no penalty force
   fsi::Engine engine(s);
   int contact_step = -1;

@@ -35,6 +35,11 @@ class FsiSystem {
   /// New numerical parameters between steps (Engine::set_numerics): the solid velocity
   /// stabilization (alpha, s) at once, the CIP weights from the next set_geometry on.
   void set_numerics(const NumericsSpec& numerics);
+  /// Whether the cavitation floor of the numerics acts (true, the default) or not (the
+  /// step from an impulsive start: Engine::Impl::attempt).
+  void set_cavitation_floor(bool on) {
+    coefficients_.cavitation_p_pa = on ? numerics_.cavitation_pressure_pa : 0.0;
+  }
 
   /// R(x). Dirichlet rows read x - g.
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const;
