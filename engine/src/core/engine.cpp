@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/contact_release.hpp"
 #include "core/degeneration.hpp"
 #include "core/field_view_builder.hpp"
 #include "core/fsi_system.hpp"
@@ -142,6 +143,7 @@ struct Engine::Impl {
         mesh, fe::cut_data(mesh, interface::ips_level_set(body, cur, buckets, s0.solution), cut_options()));
     const fe::QuadratureTable quad = fe::build_quadrature(next);
     system.set_geometry(next, quad, origin->time_step_s);
+    set_step_rules(s0, next);
     std::vector<forms::OldValues> old;
     interface::compute_old_values(mesh, buckets, next, quad, {&cur, &s0.solution}, {&prev, &s0.previous_solution},
                                   body, scenario.walls, mapping_options(origin->time_step_s), old);
@@ -230,6 +232,24 @@ struct Engine::Impl {
 
   int last_ips_failures = 0;  ///< of the latest attempt (diagnostics for the step report)
 
+  /// What the system's assembly takes from the state at a step's start besides the
+  /// geometry: the cavitation floor (off for the first step of a moving start) and the
+  /// wall nodes the solid may leave (core/contact_release.hpp). Also for the step a
+  /// restored factorization was computed in, so that it is rebuilt bit for bit.
+  void set_step_rules(const State& start, const fe::CutMesh& next) {
+    // The first step of a body that starts moving adapts its initial flow (the potential
+    // flow of interface::initial_fluid_velocity) to the walls: its pressure is an impulse
+    // of order rho_f |dv| L / k (+-5e4 Pa across the U-box of
+    // assets/scenarios/impacts/side_wall_throw.json at k = 2e-3 s), not the suction of a
+    // film, and under the floor of -1e4 Pa Newton made no progress on it at any halving
+    // (ThrownBall.*). From the second step on the flow moves with the body (-5e3 Pa behind
+    // that ball at step 5) and the floor acts.
+    system.set_cavitation_floor(!(start.step == 0 && starts_moving()));
+    const Functionals& f = start.functionals;
+    system.set_released_nodes(core::released_wall_nodes(mesh, scenario.walls, next.touches_solid,
+                                                        {f.mean_vx_mps, f.mean_vy_mps}, {f.centroid_x_m, f.centroid_y_m}));
+  }
+
   /// Whether the body has an initial velocity (its first step is an impulsive start).
   bool starts_moving() const {
     return scenario.body.initial_velocity_mps.x != 0.0 || scenario.body.initial_velocity_mps.y != 0.0;
@@ -240,14 +260,7 @@ struct Engine::Impl {
                               StepReport& report) {
     auto t0 = std::chrono::steady_clock::now();
     system.set_geometry(cut_next, quad, k);
-    // The first step of a body that starts moving adapts its initial flow (the potential
-    // flow of interface::initial_fluid_velocity) to the walls: its pressure is an impulse
-    // of order rho_f |dv| L / k (+-5e4 Pa across the U-box of
-    // assets/scenarios/impacts/side_wall_throw.json at k = 2e-3 s), not the suction of a
-    // film, and under the floor of -1e4 Pa Newton made no progress on it at any halving
-    // (ThrownBall.*). From the second step on the flow moves with the body (-5e3 Pa behind
-    // that ball at step 5) and the floor acts.
-    system.set_cavitation_floor(!(state.step == 0 && starts_moving()));
+    set_step_rules(state, cut_next);
     report.geometry_seconds += seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();

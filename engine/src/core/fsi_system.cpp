@@ -277,6 +277,7 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
         for (int a = 0; a < e.vertices; ++a) {
           in.u_row_solid[a] = cut.touches_solid[e.node[a]];
           in.p_row_fluid[a] = cut.touches_fluid[e.node[a]];
+          in.u_row_released[a] = !released_.empty() && released_[e.node[a]];
         }
         if constexpr (kJacobian) {
           if (forms::has_hand_jacobian(in)) {

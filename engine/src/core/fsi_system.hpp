@@ -37,6 +37,9 @@ class FsiSystem {
   void set_numerics(const NumericsSpec& numerics);
   /// Whether the cavitation floor of the numerics acts (true, the default) or not (the
   /// step from an impulsive start: Engine::Impl::attempt).
+  /// The wall nodes whose u row is the extension this step (core/contact_release.hpp;
+  /// empty: none).
+  void set_released_nodes(std::vector<char> released) { released_ = std::move(released); }
   void set_cavitation_floor(bool on) {
     coefficients_.cavitation_p_pa = on ? numerics_.cavitation_pressure_pa : 0.0;
   }
@@ -79,6 +82,7 @@ class FsiSystem {
   forms::FsiCoefficients coefficients_;
   solve::SparseMatrix pattern_;
   std::vector<std::vector<int>> patch_groups_;  ///< mesh::colour_patches: assembled group by group
+  std::vector<char> released_;                  ///< set_released_nodes
   int threads_ = 1;                              ///< threads of the element loop
   std::vector<int> dirichlet_dofs_;
   std::vector<std::vector<int>> dirichlet_row_entries_;  ///< value indices of each Dirichlet row

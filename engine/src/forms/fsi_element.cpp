@@ -92,7 +92,10 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
         const double N = qp.value[a], dx = qp.grad[a].x(), dy = qp.grad[a].y();
         for (int i = 0; i < 2; ++i) {
           r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);
-          r[5 * a + 2 + i] += w * (du[i] * N - stab * (G[i][0] * dx + G[i][1] * dy));
+          if (in.u_row_released[a])
+            r[5 * a + 2 + i] += (w * c.extension_u) * (H[i][0] * dx + H[i][1] * dy);
+          else
+            r[5 * a + 2 + i] += w * (du[i] * N - stab * (G[i][0] * dx + G[i][1] * dy));
         }
         if (!in.p_row_fluid[a]) r[5 * a + 4] += (w * c.extension_p) * (gp[0] * dx + gp[1] * dy);
       }

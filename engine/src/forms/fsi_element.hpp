@@ -91,6 +91,9 @@ struct ElementInput {
   double h_patch_m = 0.0;                   ///< h_P of the element's patch
   std::array<char, 4> u_row_solid{};        ///< node touches the solid: u row = solid equation
   std::array<char, 4> p_row_fluid{};        ///< node touches the fluid: p row = divergence equation
+  /// A wall node the solid may leave (core/contact_release.hpp): in a solid sub-element its
+  /// u row is the harmonic extension, not the displacement equation.
+  std::array<char, 4> u_row_released{};
   const OpenBoundarySide* open_sides = nullptr;
   int num_open_sides = 0;
 };
