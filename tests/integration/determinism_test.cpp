@@ -85,6 +85,18 @@ TEST(Determinism, RestoredStateContinuesBitIdenticallyWithGmres) {
   expect_restored_state_continues_bit_identically(s);
 }
 
+TEST(Determinism, RestoredStateContinuesBitIdenticallyAfterAMovingStart) {
+  // A moving start (the potential flow, the first step without the cavitation floor, the
+  // second from p = 0: Engine::Impl::set_step_rules) goes on bit for bit from a
+  // checkpoint after its first step.
+  fsi::Scenario s = fsi::testing::coarse_example1(fsi::Method::fsi);
+  s.walls = {fsi::Segment2{{-1.0, 0.5}, {-1.0, -1.0}}, fsi::Segment2{{-1.0, -1.0}, {1.0, -1.0}},
+             fsi::Segment2{{1.0, -1.0}, {1.0, 0.5}}};
+  s.body.initial_velocity_mps = {1.0, 0.0};  // an impulse of about +-5e4 Pa: under the floor
+  s.numerics.time_step_s = 2e-3;
+  expect_restored_state_continues_bit_identically(s, 1, 3);
+}
+
 TEST(Determinism, RestoredStateContinuesBitIdenticallyAfterReReferencing) {
   // The reference is part of the state and of the checkpoint (format 6); the factorization
   // origin keeps the reference of its own step.
