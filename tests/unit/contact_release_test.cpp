@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh/patch_mesh.hpp"
+#include "fe_test_meshes.hpp"
 
 namespace {
 
@@ -13,15 +13,7 @@ namespace {
 // (x = 1); the body's centroid inside.
 struct Box {
   std::vector<fsi::Segment2> walls{{{0.0, 0.0}, {1.0, 0.0}}, {{1.0, 0.0}, {1.0, 1.0}}};
-  fsi::mesh::PatchMesh mesh;
-  Box() {
-    fsi::MeshSpec spec;
-    fsi::BlockSpec b;
-    b.x = {fsi::AxisPiece{0.0, 1.0, 2, 0.0, 0.0}};
-    b.y = {fsi::AxisPiece{0.0, 1.0, 2, 0.0, 0.0}};
-    spec.blocks = {b};
-    mesh = fsi::mesh::build_patch_mesh(spec, walls);
-  }
+  fsi::mesh::PatchMesh mesh = fsi::test::block_mesh(2, 2, 1.0, 1.0, false, {}, 0, walls);
   int node_at(double x, double y) const {
     for (int n = 0; n < mesh.num_nodes(); ++n)
       if ((mesh.nodes[n] - Eigen::Vector2d(x, y)).norm() < 1e-12) return n;

@@ -12,9 +12,10 @@ namespace fsi::test {
 using mesh::Vec2;
 
 /// One block of nx x ny patches; uniform axes on [x0, x0 + w] x [y0, y0 + h], or mapped
-/// onto the quadrilateral `corners` (counter-clockwise) when `mapped`.
+/// onto the quadrilateral `corners` (counter-clockwise) when `mapped`; `walls` marked.
 inline mesh::PatchMesh block_mesh(int nx, int ny, double w, double h, bool mapped = false,
-                                  std::array<Point2, 4> corners = {}, int refinements = 0) {
+                                  std::array<Point2, 4> corners = {}, int refinements = 0,
+                                  const std::vector<Segment2>& walls = {}) {
   BlockSpec b;
   b.x = {AxisPiece{0.0, mapped ? 1.0 : w, nx, 0.0, 0.0}};
   b.y = {AxisPiece{0.0, mapped ? 1.0 : h, ny, 0.0, 0.0}};
@@ -23,7 +24,7 @@ inline mesh::PatchMesh block_mesh(int nx, int ny, double w, double h, bool mappe
   MeshSpec spec;
   spec.blocks = {b};
   spec.refinements = refinements;
-  return mesh::build_patch_mesh(spec, {});
+  return mesh::build_patch_mesh(spec, walls);
 }
 
 /// (-1,1)^2 graded 1:4 in x (growing) and 4:1 in y (shrinking), as in the studies.

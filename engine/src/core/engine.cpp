@@ -275,9 +275,10 @@ struct Engine::Impl {
     last_ips_failures = ms.ips_failures;  // reported once, for the attempt that counts
 
     x = initial_guess();
-    // ... and that impulse is no guess for the second step's pressure: from it, under the
-    // floor, Newton started at a residual of 7.6e3 and did not converge within 4 halvings
-    // on the coarse U-box of ThrownBall.*; from p = 0 every step there converges.
+    // The first step of a moving start ends with an impulse for pressure (set_step_rules),
+    // no guess for the second step's: from it, under the floor, Newton started at a
+    // residual of 7.6e3 and did not converge within 4 halvings on the coarse U-box of
+    // ThrownBall.*; from p = 0 every step there converges.
     if (state.step == 1 && starts_moving())
       for (Eigen::Index i = kP; i < x.size(); i += kFieldsPerNode) x[i] = 0.0;
     solve::NewtonOptions no;
