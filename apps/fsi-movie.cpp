@@ -24,7 +24,8 @@
 // functionals.csv keeps its rows up to that checkpoint and summary.json its touch-downs.
 // Progress goes to stderr (a bar on a terminal). Ctrl-C stops after the current step,
 // closes the movie and writes the plots and summary.json with "interrupted": true.
-// Exit code: 0 done, 1 failed while running, 2 bad input (message + usage), 130
+// Exit code: 0 done, 1 failed while running (also a run the engine stopped before its end
+// time: a rejected step, a degenerated body), 2 bad input (message + usage), 130
 // interrupted.
 //
 // Examples:
@@ -171,7 +172,12 @@ int main(int argc, char** argv) {
                    fsi::app::ProgressMeter::duration_text(r.wall_seconds).c_str(),
                    r.unconverged_steps, args.movie.out_dir.c_str());
     }
-    return r.interrupted ? fsi::app::kExitInterrupted : 0;
+    if (r.interrupted) return fsi::app::kExitInterrupted;
+    if (!r.stop_reason.empty()) {
+      std::fprintf(stderr, "fsi-movie: stopped before the end time: %s\n", r.stop_reason.c_str());
+      return kExitFailed;
+    }
+    return 0;
   } catch (const fsi::InputError& e) {
     std::fprintf(stderr, "fsi-movie: %s\n", e.what());
     return kExitBadInput;

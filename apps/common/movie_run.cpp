@@ -160,7 +160,8 @@ class MovieRun {
     if (!broken_state && engine_.state().step != last_frame_step_) write_frame();  // the last state
     meter_.finish();
     finish_outputs();
-    return {summary_.interrupted(), summary_.steps(), summary_.unconverged_steps(), wall_seconds()};
+    return {summary_.interrupted(), summary_.steps(), summary_.unconverged_steps(), wall_seconds(),
+            summary_.stop_reason()};
   }
 
  private:

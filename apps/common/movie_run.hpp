@@ -16,6 +16,7 @@
 #include <fsi/renderer.hpp>
 #include <fsi/scenario.hpp>
 #include <optional>
+#include <string>
 
 namespace fsi::app {
 
@@ -56,6 +57,9 @@ struct MovieResult {
   long steps = 0;
   long unconverged_steps = 0;
   double wall_seconds = 0.0;
+  /// Why the run ended before its end time (a rejected step, a degenerated body; also
+  /// "interrupted by a signal"), as in summary.json; empty when it reached the end.
+  std::string stop_reason;
 };
 
 /// Runs `scenario` as described above. Throws on unusable output folders or files.

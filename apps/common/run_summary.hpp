@@ -41,6 +41,7 @@ class RunSummary {
   void set_interrupted(bool interrupted) { interrupted_ = interrupted; }
   /// Why the run ended before its end time (empty: it did not).
   void set_stop_reason(std::string why) { stop_reason_ = std::move(why); }
+  const std::string& stop_reason() const { return stop_reason_; }
 
   bool interrupted() const { return interrupted_; }
   long steps() const { return steps_; }

@@ -200,6 +200,20 @@ TEST(MovieApp, ResumesFromItsCheckpointsBitIdentically) {
   EXPECT_NE(read_text(resumed.string() + ".log").find("step_000004.ckpt"), std::string::npos);
 }
 
+TEST(MovieApp, ExitsWithOneWhenTheEngineStopsTheRunEarly) {
+  // One Newton iteration per step, no halving and no best accepted: the engine rejects the
+  // first step. summary.json names the stop, and the exit code says the run failed.
+  const fs::path out = fresh_dir("rejected");
+  const std::vector<std::string> args{kScenario.string(), out.string(), "--no-png", "--no-video", "--no-vtu",
+                                      "--quiet", "--set", "/numerics/failure_policy=\"halve_step\"",
+                                      "--set", "/numerics/newton_budget=1", "--set", "/numerics/max_halvings=0",
+                                      "--set", "/numerics/accept_best_max_residual=1e-300"};
+  EXPECT_EQ(wait_exit_code(start_movie(args, out.string() + ".log")), 1) << read_text(out.string() + ".log");
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_NE(summary["stop_reason"].get<std::string>().find("rejected step 1"), std::string::npos);
+  EXPECT_NE(read_text(out.string() + ".log").find("stopped before the end time"), std::string::npos);
+}
+
 TEST(MovieApp, ContinuesAStoppedRunInItsFolder) {
   const std::vector<std::string> quiet_csv{"--no-png", "--no-video", "--no-vtu", "--quiet"};
   const fs::path straight = fresh_dir("straight"), stopped = fresh_dir("stopped");
