@@ -26,6 +26,8 @@ const char* kind_name(StepEvent::Kind k) {
       return "non_finite";
     case StepEvent::Kind::degenerated:
       return "degenerated";
+    case StepEvent::Kind::contact_retried:
+      return "contact_retried";
   }
   return "unknown";
 }
@@ -33,7 +35,8 @@ const char* kind_name(StepEvent::Kind k) {
 bool kind_from_name(const std::string& name, StepEvent::Kind& kind) {
   for (StepEvent::Kind k : {StepEvent::Kind::real_contact, StepEvent::Kind::contact_force_active,
                             StepEvent::Kind::step_halved, StepEvent::Kind::rolled_back,
-                            StepEvent::Kind::non_finite, StepEvent::Kind::degenerated}) {
+                            StepEvent::Kind::non_finite, StepEvent::Kind::degenerated,
+                            StepEvent::Kind::contact_retried}) {
     if (name == kind_name(k)) {
       kind = k;
       return true;

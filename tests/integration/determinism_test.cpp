@@ -97,6 +97,13 @@ TEST(Determinism, RestoredStateContinuesBitIdenticallyAfterAMovingStart) {
   expect_restored_state_continues_bit_identically(s, 1, 3);
 }
 
+TEST(Determinism, RestoredStateContinuesBitIdenticallyInRealContact) {
+  // The ball touches the ground at step 20 and springs back: the wall's hold on the solid
+  // (core/contact_release.hpp, from the residual at each step's start) goes on bit for
+  // bit from a checkpoint taken in contact.
+  expect_restored_state_continues_bit_identically(fsi::testing::stiff_ball_touching_down(), 26, 8);
+}
+
 TEST(Determinism, RestoredStateContinuesBitIdenticallyAfterReReferencing) {
   // The reference is part of the state and of the checkpoint (format 6); the factorization
   // origin keeps the reference of its own step.

@@ -4,6 +4,7 @@
 #include <fsi/engine.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "test_scenarios.hpp"
@@ -61,18 +62,11 @@ TEST(RealContact, IsReportedAndTheRunContinues) {
 }
 
 TEST(RealContact, ASlowTouchDownRestsOnTheGround) {
-  // The stiff ball of the chapter's contact study, dropped 5 mm above the ground: the
-  // fluid cushion slows it to about 1.5 mm/s, it touches the ground and, held by the
-  // no-slip wall, stays there (the chapter's ball rests in real contact from t = 4.4 s).
-  fsi::Scenario s = fsi::testing::coarse_example1();
-  s.body.center_m = {0.0, -1.0 + s.body.radius_m + 5e-3};
-  s.body.initial_velocity_mps = {0.0, -0.5};
-  s.solid.mu_pa = 3.2e6;
-  s.solid.lambda_pa = 1.28e7;
-  s.contact = {};
-  s.numerics.time_step_s = 2e-3;
-  s.numerics.end_time_s = 1.0;
-  fsi::Engine engine(s);
+  // The stiff ball touches the ground at t = 0.04 s and, pressed on as a whole, the
+  // contact patch is held (core/contact_release.hpp): the ball stays there and comes to
+  // rest (the chapter's ball rests in real contact from t = 4.4 s). Let go node by node
+  // where single nodes pulled, it sprang back by 0.55 mm and touched again at 0.40 s.
+  fsi::Engine engine(fsi::testing::stiff_ball_touching_down());
   int contact_step = -1;
   for (int i = 0; i < 200 && contact_step < 0; ++i) {
     const fsi::StepReport r = engine.step();
@@ -82,15 +76,19 @@ TEST(RealContact, ASlowTouchDownRestsOnTheGround) {
   }
   ASSERT_GE(contact_step, 0) << "the ball never touched the ground";
   const double mass_error_at_contact = engine.state().functionals.mass_error;
-  for (int i = 0; i < 40; ++i) {
+  double largest_gap_m = 0.0;
+  while (engine.state().time_s < 0.5) {
     const fsi::StepReport r = engine.step();
-    ASSERT_TRUE(r.converged) << "step " << i << " after the contact: " << r.message;
-    ASSERT_TRUE(finite(engine.state().functionals));
+    ASSERT_TRUE(r.converged) << "t = " << engine.state().time_s << " after the contact: " << r.message;
+    const fsi::Functionals& f = engine.state().functionals;
+    ASSERT_TRUE(finite(f));
+    ASSERT_GT(f.bottom_y_m, -1.0 - 1e-6) << "sinking into the ground at t = " << engine.state().time_s;
+    largest_gap_m = std::max(largest_gap_m, f.min_distance_m);
   }
+  EXPECT_LT(largest_gap_m, 1e-6) << "it stays on the ground";
   const fsi::Functionals& f = engine.state().functionals;
-  EXPECT_LT(f.min_distance_m, 1e-6) << "still touching";
-  EXPECT_GT(f.bottom_y_m, -1.0 - 1e-6) << "not sinking into the ground";
-  EXPECT_LT(std::abs(f.mean_vy_mps), 5e-3) << "at rest";
+  EXPECT_LT(f.min_distance_m, 1e-6) << "touching";
+  EXPECT_LT(std::abs(f.mean_vy_mps), 2e-3) << "at rest";
   EXPECT_NEAR(f.mass_error, mass_error_at_contact, 1e-3);
 }
 

@@ -22,7 +22,11 @@ namespace fsi {
 struct StepEvent {
   /// degenerated: the step's solution broke the body (core/degeneration.hpp); it was not
   /// kept (retried shorter with FailurePolicy::halve_step, else rolled back).
-  enum class Kind { real_contact, contact_force_active, step_halved, rolled_back, non_finite, degenerated };
+  /// contact_retried: Newton did not converge in real contact, and the step was tried again
+  /// at the same length with the wall's hold on the solid turned round (the contact patches
+  /// held are released and the released held: core/contact_release.hpp).
+  enum class Kind { real_contact, contact_force_active, step_halved, rolled_back, non_finite, degenerated,
+                    contact_retried };
   Kind kind;
   double time_s = 0.0;
   Point2 where_m;          ///< place (contact: the interface point nearest the wall)

@@ -129,6 +129,14 @@ struct Engine::Impl {
     after_state_change();
   }
 
+  /// Drops the factorization held for the next step: that of a step with the wall's hold
+  /// turned round, which restore_factorization() could not rebuild from the state alone
+  /// (the next step factorizes afresh, in a continued run and a restored one alike).
+  void forget_factorization() {
+    newton.reset();
+    state.factorization_origin.reset();
+  }
+
   /// Rebuilds the factorization a saved state refers to: the geometry and old values of
   /// the step it was computed in, and the Jacobian at the saved iterate.
   void restore_factorization() {
@@ -143,11 +151,12 @@ struct Engine::Impl {
         mesh, fe::cut_data(mesh, interface::ips_level_set(body, cur, buckets, s0.solution), cut_options()));
     const fe::QuadratureTable quad = fe::build_quadrature(next);
     system.set_geometry(next, quad, origin->time_step_s);
-    set_step_rules(s0, next);
+    set_step_rules(s0);
     std::vector<forms::OldValues> old;
     interface::compute_old_values(mesh, buckets, next, quad, {&cur, &s0.solution}, {&prev, &s0.previous_solution},
                                   body, scenario.walls, mapping_options(origin->time_step_s), old);
     system.set_old_values(std::move(old));
+    release_wall_nodes(s0, cur, next);
     newton.factorize_at(system, origin->iterate);
   }
 
@@ -231,12 +240,13 @@ struct Engine::Impl {
   }
 
   int last_ips_failures = 0;  ///< of the latest attempt (diagnostics for the step report)
+  bool last_attempt_in_contact = false;  ///< a wall node touched the solid in the latest attempt
 
   /// What the system's assembly takes from the state at a step's start besides the
-  /// geometry: the cavitation floor (off for the first step of a moving start) and the
-  /// wall nodes the solid may leave (core/contact_release.hpp). Also for the step a
-  /// restored factorization was computed in, so that it is rebuilt bit for bit.
-  void set_step_rules(const State& start, const fe::CutMesh& next) {
+  /// geometry: the cavitation floor (off for the first step of a moving start); with the
+  /// old values, release_wall_nodes(). Also for the step a restored factorization was
+  /// computed in, so that it is rebuilt bit for bit.
+  void set_step_rules(const State& start) {
     // The first step of a body that starts moving adapts its initial flow (the potential
     // flow of interface::initial_fluid_velocity) to the walls: its pressure is an impulse
     // of order rho_f |dv| L / k (+-5e4 Pa across the U-box of
@@ -245,9 +255,34 @@ struct Engine::Impl {
     // (ThrownBall.*). From the second step on the flow moves with the body (-5e3 Pa behind
     // that ball at step 5) and the floor acts.
     system.set_cavitation_floor(!(start.step == 0 && starts_moving()));
-    const Functionals& f = start.functionals;
-    system.set_released_nodes(core::released_wall_nodes(mesh, scenario.walls, next.touches_solid,
-                                                        {f.mean_vx_mps, f.mean_vy_mps}, {f.centroid_x_m, f.centroid_y_m}));
+  }
+
+  /// The wall nodes the solid lets go of this step (core/contact_release.hpp), from the
+  /// wall's force on the state at the step's start (geometry `cur`), on the step's geometry
+  /// `next` and old values (set before). Only in real contact: one residual more per step.
+  /// With `turned`, the other way round: the nodes it holds are released and the
+  /// released held (the retry of a step that did not converge in real contact).
+  /// Returns whether some wall node touches the solid.
+  bool release_wall_nodes(const State& start, const fe::CutMesh& cur, const fe::CutMesh& next, bool turned = false) {
+    system.set_released_nodes({});
+    bool touching = false;
+    for (std::size_t n = 0; n < mesh.nodes.size() && !touching; ++n)
+      touching = mesh.on_wall[n] && next.touches_solid[n];
+    if (!touching) return false;
+    Eigen::VectorXd wall_force;
+    system.unconstrained_residual(start.solution, wall_force);
+    std::vector<char> released = core::released_wall_nodes(mesh, next.touches_solid, cur.touches_solid, wall_force);
+    if (turned) {
+      released.resize(mesh.nodes.size(), 0);
+      bool any = false;
+      for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+        released[n] = mesh.on_wall[n] && next.touches_solid[n] && !released[n];
+        any = any || released[n];
+      }
+      if (!any) released.clear();
+    }
+    system.set_released_nodes(std::move(released));
+    return true;
   }
 
   /// Whether the body has an initial velocity (its first step is an impulsive start).
@@ -257,10 +292,10 @@ struct Engine::Impl {
 
   /// One attempt at a step of size k on the geometry cut_next. Does not touch the state.
   solve::NewtonResult attempt(double k, const fe::QuadratureTable& quad, Eigen::VectorXd& x,
-                              StepReport& report) {
+                              StepReport& report, bool contact_turned = false) {
     auto t0 = std::chrono::steady_clock::now();
     system.set_geometry(cut_next, quad, k);
-    set_step_rules(state, cut_next);
+    set_step_rules(state);
     report.geometry_seconds += seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();
@@ -272,6 +307,7 @@ struct Engine::Impl {
         body, scenario.walls, mo, old);
     system.set_old_values(std::move(old));
     report.mapping_seconds += seconds_since(t0);
+    last_attempt_in_contact = release_wall_nodes(state, cut_cur, cut_next, contact_turned);
     last_ips_failures = ms.ips_failures;  // reported once, for the attempt that counts
 
     x = initial_guess();
@@ -426,13 +462,21 @@ struct Engine::Impl {
     std::optional<Outcome> best_outcome;
     std::optional<core::Degeneration> broken;  // of the latest attempt that broke the body
     const bool may_halve = scenario.numerics.failure_policy == FailurePolicy::halve_step;
+    // In real contact a step that does not converge is first tried again at the same
+    // length with the wall's hold turned round (release_wall_nodes): the hold is decided
+    // explicitly from the step's start, and where the wall's force is about to change
+    // sign it can pick the wrong side. The side wall throw of assets/scenarios/impacts/
+    // held its contact patch at t = 1.183 s as the ball left the wall and did not
+    // converge at any halving; released, that step and the 29 after it converge.
+    int halvings = 0;
+    bool contact_turned = false, best_turned = false;
     for (int attempt_no = 0;; ++attempt_no) {
       Eigen::VectorXd x;
-      const solve::NewtonResult r = attempt(k, quad, x, report);
+      const solve::NewtonResult r = attempt(k, quad, x, report, contact_turned);
       const bool finite = !r.non_finite && x.allFinite();
       report.largest_residual = residual_peak(r);
       report.converged = r.converged && finite;
-      core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, attempt_no, best_x.size() > 0);
+      core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, halvings, best_x.size() > 0);
       // A solution the step would keep (now, or later as the best attempt) must leave a
       // sound body: a broken one is retried shorter (halve_step) or rolled back.
       std::optional<Outcome> outcome;
@@ -451,7 +495,7 @@ struct Engine::Impl {
           outcome.reset();
           verdict.candidate = false;
           verdict.flagged_early = false;
-          if (may_halve && attempt_no < scenario.numerics.max_halvings)
+          if (may_halve && halvings < scenario.numerics.max_halvings)
             verdict.action = core::AttemptAction::retry_halved;
           else if (may_halve && best_x.size() > 0)
             verdict.action = core::AttemptAction::accept_best;
@@ -467,6 +511,7 @@ struct Engine::Impl {
         best_k = k;
         best_peak = report.largest_residual;
         best_outcome = outcome;
+        best_turned = contact_turned;
       }
       if (verdict.action == core::AttemptAction::accept) {
         if (!r.norms.empty()) kept_first = r.norms.front(), kept_last = r.norms.back();
@@ -475,6 +520,7 @@ struct Engine::Impl {
           report.time_error_m = core::displacement_error_estimate(cut_prev, state.previous_solution, cut_cur,
                                                                   state.solution, cut_next, x, state.time_step_s, k);
         accept(std::move(x), k, std::move(quad), std::move(*outcome), report);
+        if (contact_turned) forget_factorization();
         report.accepted = true;
         state.time_step_limit_s = core::next_time_step_limit(
             {k, attempt_no == 0 && report.converged, r.iterations}, scenario.numerics.time_step_s);
@@ -490,7 +536,16 @@ struct Engine::Impl {
         }
         break;
       }
+      if (verdict.action == core::AttemptAction::retry_halved && attempt_no == 0 && last_attempt_in_contact) {
+        contact_turned = true;
+        report.events.push_back({StepEvent::Kind::contact_retried, state.time_s, {}, -1,
+                                 (this_broke ? "the body broke" : "Newton did not converge") +
+                                     std::string(" in real contact: retrying with the wall's hold turned round")});
+        continue;
+      }
+      contact_turned = false;  // the halvings hold as decided
       if (verdict.action == core::AttemptAction::retry_halved) {
+        ++halvings;
         k *= 0.5;
         report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
                                  (this_broke ? "the body broke" : "Newton did not converge") +
@@ -517,6 +572,7 @@ struct Engine::Impl {
         report.largest_residual = best_peak;
         report.converged = false;
         accept(std::move(best_x), k, std::move(quad), std::move(*best_outcome), report);
+        if (best_turned || contact_turned) forget_factorization();  // kept or held last
         report.accepted = true;
         state.time_step_limit_s = core::next_time_step_limit({k, false, 0}, scenario.numerics.time_step_s);
         break;

@@ -235,7 +235,7 @@ void FsiSystem::build_contact_forces() {
 
 template <bool kJacobian>
 void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
-                         solve::SparseMatrix* jacobian) const {
+                         solve::SparseMatrix* jacobian, bool constrain) const {
   using Scalar = std::conditional_t<kJacobian, forms::Jet, double>;
   const fe::CutMesh& cut = *cut_;
   r = contact_force_;
@@ -322,7 +322,7 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
     parallel_chunks(threads_, static_cast<int>(group.size()),
                     [&](int begin, int end) { assemble_patches(group, begin, end); });
   // Dirichlet rows: x_d - 0 (no-slip walls).
-  for (std::size_t i = 0; i < dirichlet_dofs_.size(); ++i) {
+  for (std::size_t i = 0; constrain && i < dirichlet_dofs_.size(); ++i) {
     const int d = dirichlet_dofs_[i];
     r[d] = x[d];
     if constexpr (kJacobian) {
@@ -334,6 +334,10 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
 
 void FsiSystem::residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
   assemble<false>(x, r, nullptr);
+}
+
+void FsiSystem::unconstrained_residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+  assemble<false>(x, r, nullptr, false);
 }
 
 void FsiSystem::residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& r,

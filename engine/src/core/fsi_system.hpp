@@ -35,17 +35,21 @@ class FsiSystem {
   /// New numerical parameters between steps (Engine::set_numerics): the solid velocity
   /// stabilization (alpha, s) at once, the CIP weights from the next set_geometry on.
   void set_numerics(const NumericsSpec& numerics);
-  /// Whether the cavitation floor of the numerics acts (true, the default) or not (the
-  /// step from an impulsive start: Engine::Impl::attempt).
   /// The wall nodes whose u row is the extension this step (core/contact_release.hpp;
   /// empty: none).
   void set_released_nodes(std::vector<char> released) { released_ = std::move(released); }
+  /// Whether the cavitation floor of the numerics acts (true, the default) or not (the
+  /// step from an impulsive start: Engine::Impl::attempt).
   void set_cavitation_floor(bool on) {
     coefficients_.cavitation_p_pa = on ? numerics_.cavitation_pressure_pa : 0.0;
   }
 
   /// R(x). Dirichlet rows read x - g.
   void residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const;
+  /// R(x) with the Dirichlet rows left as assembled: the momentum rows of a wall node hold
+  /// the force [N/m] the wall exerts there on the solid and fluid beside it (the weak
+  /// form's boundary term, t = sigma n integrated against the node's shape function).
+  void unconstrained_residual(const Eigen::VectorXd& x, Eigen::VectorXd& r) const;
   /// R(x) and its exact Jacobian (values written into `jacobian`, which must have the
   /// pattern of pattern()).
   void residual_and_jacobian(const Eigen::VectorXd& x, Eigen::VectorXd& r,
@@ -72,7 +76,8 @@ class FsiSystem {
 
  private:
   template <bool kJacobian>
-  void assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* jacobian) const;
+  void assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r, solve::SparseMatrix* jacobian,
+                bool constrain = true) const;
   void build_open_sides();
   void build_contact_forces();
 
