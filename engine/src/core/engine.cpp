@@ -467,7 +467,8 @@ struct Engine::Impl {
     // explicitly from the step's start, and where the wall's force is about to change
     // sign it can pick the wrong side. The side wall throw of assets/scenarios/impacts/
     // held its contact patch at t = 1.183 s as the ball left the wall and did not
-    // converge at any halving; released, that step and the 29 after it converge.
+    // converge at any halving; released, that step converged (docs/method.md, "Letting
+    // go of a wall").
     int halvings = 0;
     bool contact_turned = false, best_turned = false;
     for (int attempt_no = 0;; ++attempt_no) {
