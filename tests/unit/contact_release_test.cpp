@@ -102,6 +102,26 @@ TEST(ContactRelease, APatchTheSolidReachesOnlyNowIsHeld) {
   EXPECT_TRUE(r[box.node_at(1.0, 0.5)]);
 }
 
+TEST(ContactRelease, TurnedRoundHoldsTheReleasedAndReleasesTheHeld) {
+  // The floor pulls, the right wall pushes: turned round, the right wall's nodes (the
+  // corner among them) are released and the floor's held.
+  const Box box;
+  const std::vector<char> solid(box.mesh.num_nodes(), 1);
+  const std::vector<char> r = fsi::core::released_wall_nodes(box.mesh, solid, solid, box.force(-1.0, -1.0));
+  ASSERT_TRUE(r[box.node_at(0.5, 0.0)]);
+  const std::vector<char> t = fsi::core::turned_round(box.mesh, solid, r);
+  ASSERT_FALSE(t.empty());
+  EXPECT_FALSE(t[box.node_at(0.5, 0.0)]);
+  EXPECT_TRUE(t[box.node_at(1.0, 0.0)]);
+  EXPECT_TRUE(t[box.node_at(1.0, 0.5)]);
+  EXPECT_FALSE(t[box.node_at(0.5, 0.5)]) << "not a wall node";
+  // Nothing released: every touching wall node is; nothing touching: none.
+  const std::vector<char> all = fsi::core::turned_round(box.mesh, solid, {});
+  ASSERT_FALSE(all.empty());
+  EXPECT_TRUE(all[box.node_at(0.0, 0.0)]);
+  EXPECT_TRUE(fsi::core::turned_round(box.mesh, std::vector<char>(box.mesh.num_nodes(), 0), {}).empty());
+}
+
 TEST(ContactRelease, NoneWhereTheWallPushesOrNothingTouches) {
   const Box box;
   const std::vector<char> solid(box.mesh.num_nodes(), 1);

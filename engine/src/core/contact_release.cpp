@@ -84,4 +84,17 @@ std::vector<char> released_wall_nodes(const mesh::PatchMesh& mesh, const std::ve
   return released;
 }
 
+std::vector<char> turned_round(const mesh::PatchMesh& mesh, const std::vector<char>& touches_solid,
+                               const std::vector<char>& released) {
+  const std::size_t nodes = mesh.nodes.size();
+  std::vector<char> turned(nodes, 0);
+  bool any = false;
+  for (std::size_t n = 0; n < nodes; ++n) {
+    turned[n] = mesh.on_wall[n] && touches_solid[n] && !(!released.empty() && released[n]);
+    any = any || turned[n];
+  }
+  if (!any) turned.clear();
+  return turned;
+}
+
 }  // namespace fsi::core

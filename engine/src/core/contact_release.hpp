@@ -39,4 +39,11 @@ namespace fsi::core {
 std::vector<char> released_wall_nodes(const mesh::PatchMesh& mesh, const std::vector<char>& touches_solid,
                                       const std::vector<char>& touched_solid, const Eigen::VectorXd& wall_force);
 
+/// The hold turned round: the wall nodes touching the solid that `released` (as
+/// released_wall_nodes returns it, empty for none) holds are released and the released
+/// held. For the retry of a step that did not converge in real contact. Empty when no
+/// node is released.
+std::vector<char> turned_round(const mesh::PatchMesh& mesh, const std::vector<char>& touches_solid,
+                               const std::vector<char>& released);
+
 }  // namespace fsi::core

@@ -272,15 +272,7 @@ struct Engine::Impl {
     Eigen::VectorXd wall_force;
     system.unconstrained_residual(start.solution, wall_force);
     std::vector<char> released = core::released_wall_nodes(mesh, next.touches_solid, cur.touches_solid, wall_force);
-    if (turned) {
-      released.resize(mesh.nodes.size(), 0);
-      bool any = false;
-      for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
-        released[n] = mesh.on_wall[n] && next.touches_solid[n] && !released[n];
-        any = any || released[n];
-      }
-      if (!any) released.clear();
-    }
+    if (turned) released = core::turned_round(mesh, next.touches_solid, released);
     system.set_released_nodes(std::move(released));
     return true;
   }
