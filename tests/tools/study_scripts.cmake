@@ -183,9 +183,10 @@ file(WRITE ${_dir}/stairs/rho1000/study-settings.txt "/numerics/cut_snap=1e-2\n"
 run_tool(study-stairs 3 --only rho1000 --out ${_dir}/stairs)
 
 # tools/validate-example1 makes its runs the same way: a row's own settings (mesh, time
-# step, 4225:1e-3's cut_snap) are passed and recorded, and --set on top is refused.
+# step, with the chapter's method 4225:1e-3's cut_snap) are passed and recorded, and --set
+# on top is refused.
 macro(run_validate want_rc)
-  run_tool(validate-example1 ${want_rc} --only 4225:1e-3 --out ${_dir}/validate ${ARGN})
+  run_tool(validate-example1 ${want_rc} --only 4225:1e-3 --method chapter --out ${_dir}/validate ${ARGN})
 endmacro()
 run_validate(0)
 file(STRINGS ${_dir}/validate/n4225_k1e-3/study-settings.txt _settings)
@@ -200,6 +201,13 @@ foreach(_want /method=chapter /mesh/refinements=0 /numerics/time_step_s=1e-3 /nu
   endif()
 endforeach()
 run_validate(3 --set /numerics/cavitation_pressure_pa=-3e4)
+# With the default numerics (no --method) a row is the shipped scenario with its mesh and step only.
+run_tool(validate-example1 0 --only 4225:1e-3 --out ${_dir}/validate-fsi)
+file(STRINGS ${_dir}/validate-fsi/n4225_k1e-3/study-settings.txt _settings)
+if(NOT _settings STREQUAL "/mesh/refinements=0;/numerics/time_step_s=1e-3")
+  message(FATAL_ERROR "validate-example1 with the default numerics recorded the settings '${_settings}'")
+endif()
+run_tool(validate-example1 2 --method exact)
 
 # tools/contact-rest-distances: the static balance of the penalty force against the
 # ball's weight lands on the chapter's rest distances (3.18e-3, 1.77e-3, 1.21e-3 m) within 3 %.

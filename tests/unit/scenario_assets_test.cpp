@@ -42,9 +42,8 @@ TEST(ScenarioAssets, EveryFileLoadsAndIsNamedUniquely) {
     }
     EXPECT_EQ(s.source, entry.path());
     EXPECT_TRUE(names.emplace(s.name, entry.path()).second) << "name used twice: " << s.name;
-    // Every shipped scenario uses the floor: -1e4 Pa, or -3e4 Pa for the material study,
-    // whose film steps k = 5e-4 s (checked with each study below).
-    EXPECT_TRUE(s.numerics.cavitation_pressure_pa == -1.0e4 || s.numerics.cavitation_pressure_pa == -3.0e4)
+    // Every shipped scenario uses the default floor of -1e4 Pa.
+    EXPECT_EQ(s.numerics.cavitation_pressure_pa, -1.0e4)
         << entry.path() << ": every shipped scenario uses the floor, got " << s.numerics.cavitation_pressure_pa;
     ++count;
   }
@@ -64,8 +63,7 @@ TEST(ScenarioAssets, BallDropIsExample1) {
 
 TEST(ScenarioAssets, ShippedScenariosLeaveTheSolverToTheDefaults) {
   // Outside the stairs (tuned, tools/make-stairs-scenarios) a shipped scenario holds
-  // physics, mesh, end time and output; of the numerics only the step and the real
-  // choices of the studies (steps of up to 4k, the material study's deeper floor).
+  // physics, mesh, end time and output; of the numerics only the step and the end time.
   for (const auto& entry : fs::recursive_directory_iterator(kAssets)) {
     if (entry.path().extension() != ".json" || entry.path().parent_path().filename() == "stairs") continue;
     SCOPED_TRACE(entry.path().string());
@@ -75,9 +73,7 @@ TEST(ScenarioAssets, ShippedScenariosLeaveTheSolverToTheDefaults) {
     if (!j.contains("numerics")) continue;
     for (const auto& item : j["numerics"].items()) {
       const std::string& key = item.key();
-      EXPECT_TRUE(key == "time_step_s" || key == "end_time_s" || key == "time_step_max_doublings" ||
-                  key == "cavitation_pressure_pa")
-          << key;
+      EXPECT_TRUE(key == "time_step_s" || key == "end_time_s") << key;
     }
   }
 }
@@ -93,17 +89,25 @@ TEST(ScenarioAssets, DemoAndFineMesh) {
   EXPECT_EQ(fine.numerics.time_step_s, 1e-3);
 }
 
+// The scenario's numerics are the default preset's with its own time step and end time.
+void expect_default_numerics_but_the_step(const fsi::Scenario& s) {
+  fsi::Scenario expected = s;
+  expected.numerics = fsi::example1_scenario().numerics;
+  expected.numerics.time_step_s = s.numerics.time_step_s;
+  expected.numerics.end_time_s = s.numerics.end_time_s;
+  EXPECT_EQ(fsi::to_json(s), fsi::to_json(expected));
+}
+
 TEST(ScenarioAssets, MaterialStudy) {
   for (const char* mu : {"5e4", "1e5", "2e5", "4e5", "8e5", "1.6e6", "3.2e6"}) {
     const fsi::Scenario s = load(std::string("materials/mu_") + mu + ".json");
     EXPECT_EQ(s.solid.mu_pa, std::stod(mu));
     EXPECT_DOUBLE_EQ(s.solid.lambda_pa, 4.0 * s.solid.mu_pa);
     EXPECT_EQ(s.contact.gamma_c, 0.0);
-    // Quarter steps near the ground with a floor three times deeper than Example 1's
-    // (docs/validation.md, "Material study").
+    // A quarter of Example 1's step, the default numerics otherwise (docs/validation.md,
+    // "Material study").
     EXPECT_EQ(s.numerics.time_step_s, 5e-4);
-    EXPECT_EQ(s.numerics.time_step_max_s(), 2e-3);
-    EXPECT_EQ(s.numerics.cavitation_pressure_pa, -3e4);
+    expect_default_numerics_but_the_step(s);
   }
 }
 
@@ -115,11 +119,8 @@ TEST(ScenarioAssets, ContactStudy) {
       EXPECT_EQ(s.contact.gamma_c, std::stod(gamma));
       EXPECT_EQ(s.solid.mu_pa, 3.2e6);
       EXPECT_EQ(s.solid.lambda_pa, 1.28e7);
-      EXPECT_EQ(s.numerics.time_step_s, 5e-4);  // quarter steps near the ground (docs/validation.md)
-      EXPECT_EQ(s.numerics.time_step_max_s(), 2e-3);
-      // Example 1's floor at the quarter step: the stiff ball hardly flattens and lifts off
-      // with it (the material study's softer balls need -3e4 Pa, docs/validation.md).
-      EXPECT_EQ(s.numerics.cavitation_pressure_pa, -1e4);
+      EXPECT_EQ(s.numerics.time_step_s, 5e-4);  // a quarter of Example 1's (docs/validation.md)
+      expect_default_numerics_but_the_step(s);
     }
   }
 }
