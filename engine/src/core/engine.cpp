@@ -261,7 +261,9 @@ struct Engine::Impl {
   /// wall's force on the state at the step's start (geometry `cur`), on the step's geometry
   /// `next` and old values (set before). Only in real contact: one residual more per step.
   /// With `turned`, the other way round: the nodes it holds are released and the
-  /// released held (the retry of a step that did not converge in real contact).
+  /// released held (the retry of a step that did not converge in real contact, at the
+  /// same start, length and geometry as the attempt before it, whose decision it turns
+  /// round instead of assembling the wall's force again).
   /// Returns whether some wall node touches the solid.
   bool release_wall_nodes(const State& start, const fe::CutMesh& cur, const fe::CutMesh& next, bool turned = false) {
     system.set_released_nodes({});
@@ -269,13 +271,18 @@ struct Engine::Impl {
     for (std::size_t n = 0; n < mesh.nodes.size() && !touching; ++n)
       touching = mesh.on_wall[n] && next.touches_solid[n];
     if (!touching) return false;
+    if (turned) {
+      system.set_released_nodes(core::turned_round(mesh, next.touches_solid, released_by_wall_force));
+      return true;
+    }
     Eigen::VectorXd wall_force;
     system.unconstrained_residual(start.solution, wall_force);
-    std::vector<char> released = core::released_wall_nodes(mesh, next.touches_solid, cur.touches_solid, wall_force);
-    if (turned) released = core::turned_round(mesh, next.touches_solid, released);
-    system.set_released_nodes(std::move(released));
+    released_by_wall_force = core::released_wall_nodes(mesh, next.touches_solid, cur.touches_solid, wall_force);
+    system.set_released_nodes(released_by_wall_force);
     return true;
   }
+  /// The decision of the latest release_wall_nodes() from the wall's force.
+  std::vector<char> released_by_wall_force;
 
   /// Whether the body has an initial velocity (its first step is an impulsive start).
   bool starts_moving() const {
