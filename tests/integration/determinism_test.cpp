@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <string>
 
 #include <fsi/error.hpp>
 
@@ -20,8 +21,11 @@ void expect_restored_state_continues_bit_identically(const fsi::Scenario& s, int
 
   fsi::Engine first(s);
   for (int i = 0; i < before; ++i) ASSERT_TRUE(first.step().converged);
-  // Through a checkpoint file, as a user would.
-  const std::filesystem::path file = std::filesystem::path(FSI_BINARY_DIR) / "determinism.ckpt";
+  // Through a checkpoint file, as a user would; one file per test, since CTest runs the
+  // tests of this file in parallel processes.
+  const std::filesystem::path file =
+      std::filesystem::path(FSI_BINARY_DIR) /
+      (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".ckpt");
   fsi::save_checkpoint(first, file);
   fsi::Engine resumed(s);
   fsi::load_checkpoint(resumed, file);

@@ -24,6 +24,7 @@
 /// extension unknown), so a future term that couples the two still gets a correct solve.
 #include <vector>
 
+#include "solve/mumps_lu.hpp"
 #include "solve/sparse_lu.hpp"
 
 namespace fsi::solve {
@@ -57,7 +58,10 @@ class SplitLU {
   /// The blocks' values from `a`; false if an entry of A_ce is not zero.
   bool gather_values(const Matrix& a);
 
-  SparseLU whole_, coupled_, extension_;
+  // The coupled block (and the whole matrix) by MUMPS, the extension block by UMFPACK:
+  // each where it is faster (solve/mumps_lu.hpp); MUMPS only ever on the calling thread.
+  MumpsLU whole_, coupled_;
+  SparseLU extension_;
   bool split_ = false;
   // The partition and pattern the block indexing below was built for.
   std::vector<char> partition_;
