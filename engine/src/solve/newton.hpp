@@ -30,8 +30,8 @@ struct NewtonOptions {
   double abs_tol = 1e-10;
   double reuse_contraction = 0.2;
   /// Whether a factorization of an earlier step may serve this step's first chord steps.
-  /// false: the step factorizes at its start (the engine's choice). With GMRES
-  /// (krylov_max_iterations > 0) every step starts from its own Jacobian anyway.
+  /// false: the step factorizes at its start (the engine's choice in real contact). With
+  /// GMRES (krylov_max_iterations > 0) every step starts from its own Jacobian anyway.
   bool reuse_across_steps = true;
   /// > 0: where a new Jacobian is needed, solve it by GMRES preconditioned with the
   /// factorization held, up to this many iterations, and refactorize only if that fails
