@@ -31,6 +31,7 @@ struct MumpsLU::Instance {
     id.job = job;
     dmumps_c(&id);
   }
+  void set_controls();
 };
 
 namespace {
@@ -44,42 +45,44 @@ bool more_workspace_helps(int info1) {
   return info1 == -8 || info1 == -9 || info1 == -14 || info1 == -15 || info1 == -17 || info1 == -20;
 }
 
-void set_controls(MUMPS_INT* icntl, double* cntl) {
+}  // namespace
+
+// The controls, numbered as in MUMPS's user guide (ICNTL(7) is icntl(7)).
+void MumpsLU::Instance::set_controls() {
+  Instance& m = *this;
   // No output at all: errors come back through INFOG(1).
-  icntl[0] = -1;
-  icntl[1] = -1;
-  icntl[2] = -1;
-  icntl[3] = 0;
+  m.icntl(1) = -1;
+  m.icntl(2) = -1;
+  m.icntl(3) = -1;
+  m.icntl(4) = 0;
   // AMF (approximate minimum fill): on the stairs' coupled blocks (43 307 unknowns) its
   // analysis takes 0.04 s against PORD's 0.21 s and METIS's 0.37 s, for a numeric
   // factorization of 0.25 s against PORD's 0.23 s and METIS's 0.32 s; a block's pattern
   // changes whenever the interface passes a node (a quarter of Example 1's
   // factorizations), so over 61 stairs steps in contact AMF took 0.88 of PORD's wall
   // time, and on Example 1 the two were even.
-  icntl[6] = 2;
+  m.icntl(7) = 2;
   // No column permutation for a zero-free diagonal and no analysis-time scaling: the
   // analysis then depends on the pattern alone, so a factorization rebuilt from a
   // checkpoint finds the same ordering whatever matrix was analysed first.
-  icntl[5] = 0;
+  m.icntl(6) = 0;
   // Row and column scaling by infinity norms, computed from the values of each
   // factorization (UMFPACK scales rows too).
-  icntl[7] = 4;
+  m.icntl(8) = 4;
   // Workspace: 30 % above the analysis's estimate (grown and retried when short).
-  icntl[13] = 30;
+  m.icntl(14) = 30;
   // Take a pivot unless it is below 1e-8 of its column within the front, as UMFPACK's
   // diagonal preference in solve/sparse_lu.cpp: a larger threshold delays pivots and
   // breaks the fill the ordering planned (1e-2: 2x the flops on Example 1).
-  cntl[0] = 1e-8;
+  m.cntl(1) = 1e-8;
 }
-
-}  // namespace
 
 MumpsLU::MumpsLU() : mumps_(std::make_unique<Instance>()) {
   mumps_->id.comm_fortran = kUseCommWorld;
   mumps_->id.par = 1;  // the host works too (there is no other process)
   mumps_->id.sym = 0;  // unsymmetric
   mumps_->run(-1);     // initialize; sets the default controls
-  set_controls(mumps_->id.icntl, mumps_->id.cntl);
+  mumps_->set_controls();
 }
 
 MumpsLU::~MumpsLU() { mumps_->run(-2); }

@@ -110,7 +110,7 @@ bool SplitLU::factorize(const Matrix& a, const std::vector<char>& extension, int
     return coupled_ok && extension_.factorize(a_ee_);
   }
   // The extension block is the smaller one (on Example 1 7917 unknowns against 13208,
-  // 0.016-0.02 s of UMFPACK against 0.045-0.05 s of MUMPS for the coupled block): it
+  // 0.016-0.02 s of UMFPACK against 0.047-0.065 s of MUMPS for the coupled block): it
   // finishes while the coupled block is still being factorized, and the two LUs share
   // nothing (each library keeps its state in its own objects; OpenBLAS serializes
   // nothing at one thread per call). MUMPS stays on this thread.
