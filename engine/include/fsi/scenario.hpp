@@ -303,6 +303,11 @@ struct Scenario {
   FluidSpec fluid;
   SolidSpec solid;
   Point2 gravity_mps2{0.0, -0.5};  ///< acts on the solid only (docs/method.md, "Gravity")
+  /// Gravity on the density difference: the solid feels (rho_s - rho_f) g, the fluid none
+  /// (its weight is in the reduced pressure), so a body lighter than the fluid rises and
+  /// one of the fluid's density floats. false (the chapter's model): the solid feels
+  /// rho_s g, as if the fluid were weightless (docs/method.md, "Gravity").
+  bool buoyancy = false;
   NumericsSpec numerics;
   ContactSpec contact;
   OutputSpec output;

@@ -41,6 +41,7 @@ FsiSystem::FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh)
   c.lambda_s = scenario.solid.lambda_pa;
   c.gx = scenario.gravity_mps2.x;
   c.gy = scenario.gravity_mps2.y;
+  c.rho_buoyancy = scenario.buoyancy ? scenario.fluid.density_kgpm3 : 0.0;
   set_numerics(numerics_);
 
   patch_groups_ = mesh::colour_patches(mesh);

@@ -85,7 +85,8 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
       const double g[2] = {c.gx, c.gy};
       S acc[2], du[2];
       for (int i = 0; i < 2; ++i) {
-        acc[i] = rho * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1] - g[i]);
+        // Weight rho g, less the displaced fluid's rho_f g with buoyancy (Scenario::buoyancy).
+        acc[i] = rho * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1] - g[i]) + c.rho_buoyancy * g[i];
         du[i] = (u[i] - u_old[i]) * inv_k + wc[0] * H[i][0] + wc[1] * H[i][1] - v[i];
       }
       for (int a = 0; a < n; ++a) {

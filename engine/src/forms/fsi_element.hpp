@@ -36,6 +36,9 @@ struct FsiCoefficients {
   double rho_f = 1e3, nu_f = 1e-3;
   double rho_s0 = 1e3, mu_s = 2e5, lambda_s = 8e5;
   double gx = 0.0, gy = -0.5;   ///< gravity on the solid [m/s^2]
+  /// The density [kg/m^3] the solid's weight is reduced by: rho_f with buoyancy (the
+  /// reduced-pressure form: the solid feels (rho_s - rho_f) g), 0 without.
+  double rho_buoyancy = 0.0;
   double alpha = 0.1, s = 2.0;  ///< solid velocity stabilization alpha h^s
   double extension_u = 1.0;     ///< weight of the displacement extension rows
   double extension_p = 1.0;     ///< weight of the pressure extension rows

@@ -141,6 +141,8 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   // like walls").
   if (scenario.contact.corners_as_walls == ContactSpec{}.corners_as_walls)
     writer.object["contact"].erase("corners_as_walls");
+  // And buoyancy off, as every scenario was before the key existed.
+  if (!scenario.buoyancy) writer.object.erase("buoyancy");
   return std::move(writer.object);
 }
 

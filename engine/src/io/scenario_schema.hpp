@@ -200,6 +200,7 @@ void visit_fields(V& v, S& s) {
   v("fluid", s.fluid, Fields{});
   v("solid", s.solid, Fields{});
   v("gravity_mps2", s.gravity_mps2, Real{-1.0e3, 1.0e3, false, false, "m/s^2"});
+  v("buoyancy", s.buoyancy, Flag{});
   v("numerics", s.numerics, Fields{});
   v("contact", s.contact, Fields{});
   v("output", s.output, Fields{});
