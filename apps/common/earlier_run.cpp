@@ -48,7 +48,7 @@ EarlierRun read_earlier_run(const fs::path& out_dir) {
   if (!std::getline(in, line) || !io::is_functionals_csv_header(line, true)) {
     throw InputError(csv.string(), "header", "not an fsi-movie functionals file with newton columns");
   }
-  // Rows of an older file (without the cavitation column) are rewritten in today's
+  // Rows of an older file (without the cavitation or rotation column) are rewritten in today's
   // columns, so that the continued file has one header.
   const bool older_columns = line != io::functionals_csv_header(true);
   bool found = false;

@@ -22,6 +22,7 @@ nlohmann::ordered_json functionals_json(const Functionals& f) {
   o["solid_area_m2"] = number_json(f.solid_area_m2);
   o["mass_error"] = number_json(f.mass_error);
   o["cavitation_rate_m2ps"] = number_json(f.cavitation_rate_m2ps);
+  o["rotation_rad"] = number_json(f.rotation_rad);
   return o;
 }
 

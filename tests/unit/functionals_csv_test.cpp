@@ -66,8 +66,8 @@ TEST(FunctionalsCsv, RowsReadBackExactly) {
 TEST(FunctionalsCsv, HeaderNamesEveryColumn) {
   EXPECT_EQ(fsi::io::functionals_csv_header(false),
             "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
-            "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error,cavitation_rate_m2ps");
-  EXPECT_EQ(cells(fsi::io::functionals_csv_header(true)).size(), 16u);
+            "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error,cavitation_rate_m2ps,rotation_rad");
+  EXPECT_EQ(cells(fsi::io::functionals_csv_header(true)).size(), 17u);
 }
 
 // Runs written before the cavitation column (the oldest runs) must still continue: their
@@ -87,10 +87,25 @@ TEST(FunctionalsCsv, FilesWithoutTheCavitationColumnReadBack) {
   EXPECT_EQ(r.functionals.cavitation_rate_m2ps, 0.0);
   EXPECT_EQ(r.newton_iterations, 4);
   EXPECT_TRUE(r.converged);
-  EXPECT_EQ(fsi::io::functionals_csv_row(r), "3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,0.007,0,4,1");
-  // One column short of either layout.
+  EXPECT_EQ(fsi::io::functionals_csv_row(r), "3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,0.007,0,0,4,1");
+  // One column short of every layout.
   EXPECT_THROW(fsi::io::parse_functionals_csv_row("3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,4,1"),
                std::invalid_argument);
+}
+
+// Runs written before the rotation column (with the cavitation column) continue too:
+// their rows read with the rotation 0.
+TEST(FunctionalsCsv, FilesWithoutTheRotationColumnReadBack) {
+  const std::string header =
+      "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
+      "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error,cavitation_rate_m2ps,newton_iterations,converged";
+  EXPECT_TRUE(fsi::io::is_functionals_csv_header(header, true));
+  const fsi::io::FunctionalsCsvRow r =
+      fsi::io::parse_functionals_csv_row("3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,0.007,2e-4,4,1");
+  EXPECT_EQ(r.functionals.cavitation_rate_m2ps, 2e-4);
+  EXPECT_EQ(r.functionals.rotation_rad, 0.0);
+  EXPECT_EQ(r.newton_iterations, 4);
+  EXPECT_EQ(fsi::io::functionals_csv_row(r), "3,0.006,0.5,-0.5,0.3,-0.4,0.4,0,-0.1,0,-0.01,0.5,0.007,2e-04,0,4,1");
 }
 
 TEST(FunctionalsCsv, RowsReadBackExactlyInHeaderOrder) {
@@ -135,7 +150,7 @@ TEST(FunctionalsCsv, NewtonColumnsComeFromTheStepReport) {
   }
   const auto all = lines(file);
   ASSERT_EQ(all.size(), 3u);
-  EXPECT_EQ(cells(all[1]).size(), 16u);
+  EXPECT_EQ(cells(all[1]).size(), 17u);
   EXPECT_EQ(all[1].substr(all[1].size() - 4), ",5,0");
   EXPECT_EQ(all[2].substr(all[2].size() - 4), ",5,1");
 

@@ -62,6 +62,47 @@ TEST(Rereference, TakesTheRigidMotionOutOfUAndKeepsTheLevelSet) {
   EXPECT_LT(largest_solid_u, 5e-4);
 }
 
+TEST(Rereference, KeepsTheLevelSetOfAnEllipseTurnedWithIt) {
+  // An ellipse's d0 sees the rotation: the re-referenced body is turned by the fit's angle
+  // (Engine's reference_body adds State::reference_rotation_rad to angle_rad).
+  fsi::Scenario s = fsi::testing::coarse_example1();
+  s.body.shape = fsi::BodyShape::ellipse;
+  s.body.half_size_m = {0.45, 0.25};
+  s.body.angle_rad = 0.2;
+  const auto mesh = fsi::mesh::build_patch_mesh(s.mesh, s.walls);
+  const fsi::fe::CutMesh cut = fsi::fe::build_cut_mesh(mesh, [&](const Vec2& x) {
+    return fsi::interface::initial_distance(s.body, x);
+  });
+  const double angle = -0.9, c = std::cos(angle), sn = std::sin(angle);
+  const Vec2 t(-0.2, -0.15);
+  Eigen::VectorXd solution = Eigen::VectorXd::Zero(fsi::kFieldsPerNode * mesh.num_nodes());
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    const Vec2 d = cut.x[n] - t;
+    const Vec2 X(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());  // Q^T (x - t)
+    solution.segment(fsi::kFieldsPerNode * n + fsi::kUx, 2) = cut.x[n] - X;
+  }
+  const fsi::core::RigidFit fit = fsi::core::fit_rigid_motion(cut, solution);
+  ASSERT_GT(fit.nodes, 20);
+  EXPECT_NEAR(fit.angle_rad, angle, 1e-9);
+  Eigen::VectorXd moved = solution;
+  fsi::core::rereference_displacement(cut, fit, moved);
+  fsi::BodySpec body = s.body;
+  const Vec2 centre = fsi::core::rereferenced_point(fit, {s.body.center_m.x, s.body.center_m.y});
+  body.center_m = {centre.x(), centre.y()};
+  body.angle_rad += fit.angle_rad;
+  fsi::BodySpec unturned = body;
+  unturned.angle_rad = s.body.angle_rad;
+  int differ = 0;
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    const Vec2 u = solution.segment(fsi::kFieldsPerNode * n + fsi::kUx, 2);
+    const Vec2 u_new = moved.segment(fsi::kFieldsPerNode * n + fsi::kUx, 2);
+    const double before = fsi::interface::initial_distance(s.body, cut.x[n] - u);
+    EXPECT_NEAR(fsi::interface::initial_distance(body, cut.x[n] - u_new), before, 1e-12) << "node " << n;
+    if (std::abs(fsi::interface::initial_distance(unturned, cut.x[n] - u_new) - before) > 1e-3) ++differ;
+  }
+  EXPECT_GT(differ, mesh.num_nodes() / 2) << "without the turn the level set would move";
+}
+
 TEST(Rereference, NoSolidNodesGiveNoFit) {
   const fsi::Scenario s = fsi::testing::coarse_example1();
   const auto mesh = fsi::mesh::build_patch_mesh(s.mesh, s.walls);

@@ -53,10 +53,25 @@ struct MeshSpec {
   int refinements = 0;            ///< global refinements (each patch -> 2x2), 0..4
 };
 
-/// An elastic body. Only balls for now: the initial signed distance d0 is |x - c| - r.
+/// The body's shape at t = 0, given by its signed distance d0 (negative inside).
+enum class BodyShape {
+  circle,            ///< d0 = |x - c| - radius_m (the chapter's ball)
+  ellipse,           ///< semi-axes half_size_m, turned by angle_rad
+  rounded_rectangle  ///< half width and height half_size_m, corners of radius radius_m, turned by angle_rad
+};
+
+/// An elastic body.
 struct BodySpec {
-  Point2 center_m{0.0, 0.0};              ///< centre of the ball at t = 0 [m]
-  double radius_m = 0.4;                  ///< radius of the ball [m]
+  Point2 center_m{0.0, 0.0};              ///< centre of the body at t = 0 [m]
+  /// circle | ellipse | rounded_rectangle (ours, except the circle). Give an ellipse or a
+  /// rounded rectangle a side of at least two patches and corners of at least a patch:
+  /// a patch holds one straight cut.
+  BodyShape shape = BodyShape::circle;
+  double radius_m = 0.4;                  ///< circle: radius; rounded_rectangle: corner radius [m]
+  /// ellipse: semi-axes; rounded_rectangle: half width and half height [m] (along the
+  /// body's own axes, which angle_rad turns); not used by the circle.
+  Point2 half_size_m{0.4, 0.4};
+  double angle_rad = 0.0;                 ///< counter-clockwise turn of the body's own x axis at t = 0
   Point2 initial_velocity_mps{0.0, 0.0};  ///< velocity of the whole body at t = 0 [m/s]
 };
 

@@ -31,6 +31,10 @@ struct Functionals {
   /// 0 with the floor off). Not the chapter's: a measure of what the floor changes in an
   /// incompressible fluid (compare with the ball's area, pi r^2).
   double cavitation_rate_m2ps = 0.0;
+  /// How far the body has turned since t = 0 [rad, counter-clockwise]: the angle of the
+  /// least-squares rigid motion of its solid nodes' initial points onto their positions
+  /// (core/rereference.hpp), plus the turns re-referencing took out of u.
+  double rotation_rad = 0.0;
 };
 
 struct FactorizationOrigin;

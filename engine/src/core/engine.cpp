@@ -68,6 +68,8 @@ struct Engine::Impl {
     BodySpec body = scenario.body;
     body.center_m.x += s.reference_offset_x_m;
     body.center_m.y += s.reference_offset_y_m;
+    // A shape turned with the body (the ball's d0 does not see it).
+    body.angle_rad += s.reference_rotation_rad;
     return body;
   }
 
@@ -182,7 +184,8 @@ struct Engine::Impl {
     const BodySpec body = reference_body(state);
     data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
     cut_next = fe::build_cut_mesh(mesh, data_next);
-    state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
+    state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution,
+                                                    state.reference_rotation_rad);
   }
 
   /// The FE function `coeffs` of `cut` (another mesh's) at every node position `x` of
@@ -363,7 +366,7 @@ struct Engine::Impl {
     const BodySpec body = reference_body(state);
     o.data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_next, buckets, x), cut_options());
     o.cut_next = fe::build_cut_mesh(mesh, o.data_next);
-    o.functionals = core::compute_functionals(scenario, o.cut_next, cut_next, quad, x);
+    o.functionals = core::compute_functionals(scenario, o.cut_next, cut_next, quad, x, state.reference_rotation_rad);
     return o;
   }
 
@@ -394,7 +397,8 @@ struct Engine::Impl {
       const BodySpec body = reference_body(state);
       data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
       cut_next = fe::build_cut_mesh(mesh, data_next);
-      state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution);
+      state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution,
+                                                    state.reference_rotation_rad);
     } else {
       data_next = std::move(outcome.data_next);
       cut_next = std::move(outcome.cut_next);

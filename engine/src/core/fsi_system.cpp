@@ -8,6 +8,7 @@
 #include "core/parallel_chunks.hpp"
 #include "forms/fluid_element_jacobian.hpp"
 #include "forms/pressure_stabilization.hpp"
+#include "interface/body.hpp"
 #include "fsi/state.hpp"
 #include "mesh/patch_colouring.hpp"
 #include "mesh/walls.hpp"
@@ -198,7 +199,8 @@ void FsiSystem::build_contact_forces() {
     }
   }
   if (solid_area_m2 > 0.0) body_centroid_m /= solid_area_m2;
-  const ContactDistance distance(scenario_.walls, cut.interface, body_centroid_m, dist0, scenario_.body.radius_m,
+  const ContactDistance distance(scenario_.walls, cut.interface, body_centroid_m, dist0,
+                                 interface::body_reach(scenario_.body),
                                  scenario_.contact.corners_as_walls && solid_area_m2 > 0.0);
   const double g = 0.5 / std::sqrt(3.0);
   for (const fe::InterfaceSegment& seg : cut.interface) {

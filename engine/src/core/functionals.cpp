@@ -5,14 +5,16 @@
 #include <limits>
 #include <numbers>
 
+#include "core/rereference.hpp"
 #include "forms/fsi_element.hpp"
+#include "interface/body.hpp"
 #include "mesh/walls.hpp"
 
 namespace fsi::core {
 
 Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geometry,
                                 const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
-                                const Eigen::VectorXd& solution) {
+                                const Eigen::VectorXd& solution, double reference_rotation_rad) {
   Functionals f;
   const double inf = std::numeric_limits<double>::infinity();
   f.min_distance_m = inf;
@@ -72,8 +74,9 @@ Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geo
     f.mean_vx_mps = mvx / area;
     f.mean_vy_mps = mvy / area;
   }
-  const double r = scenario.body.radius_m;
-  const double reference = std::numbers::pi * r * r;  // rho_s^0 cancels
+  const double reference = interface::body_area(scenario.body);  // rho_s^0 cancels
+  const RigidFit fit = fit_rigid_motion(cut, solution);
+  f.rotation_rad = reference_rotation_rad + fit.angle_rad;
   f.mass_error = std::abs(reference - mass) / reference;
   return f;
 }

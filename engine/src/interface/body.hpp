@@ -9,10 +9,22 @@ namespace fsi::interface {
 
 using mesh::Vec2;
 
-/// Signed distance to the initial ball: |X - c| - r [m].
+/// Signed distance [m] to the ellipse or rounded rectangle of `body` (BodySpec::shape),
+/// exact: the ellipse's by the bisection of D. Eberly, "Distance from a Point to an
+/// Ellipse" (robust to the points on its axes), the rounded rectangle's in closed form.
+double shape_distance(const BodySpec& body, const Vec2& X);
+
+/// The initial signed distance d0(X) [m], negative inside: |X - c| - r for the ball.
 inline double initial_distance(const BodySpec& body, const Vec2& X) {
+  if (body.shape != BodyShape::circle) return shape_distance(body, X);
   return (X - Vec2(body.center_m.x, body.center_m.y)).norm() - body.radius_m;
 }
+
+/// The body's area at t = 0 [m^2] (what the mass error compares with).
+double body_area(const BodySpec& body);
+
+/// The largest distance [m] from the centre to a point of the body (the ball's radius).
+double body_reach(const BodySpec& body);
 
 /// The fluid's velocity [m/s] at x (outside the ball) at t = 0 when the ball starts with
 /// body.initial_velocity_mps = U: the potential flow of a circle moving at U through
@@ -22,6 +34,8 @@ inline double initial_distance(const BodySpec& body, const Vec2& X) {
 /// gives the fluid its share of the momentum (a ball of the fluid's density thrown at
 /// 1 m/s across a U-shaped box moved at 0.45 m/s three steps later, against 0.79 m/s
 /// from this flow) and the steps after it did not converge (ThrownBall.*). Zero for U = 0.
+/// Other shapes take the flow of the circle of their area: a start the first step
+/// corrects, as it corrects the circle's flow for the walls.
 Vec2 initial_fluid_velocity(const BodySpec& body, const Vec2& x);
 
 /// phi(x) = d0(x - u(x)) for the displacement coefficients `solution` on `cut`. Points

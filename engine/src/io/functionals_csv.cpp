@@ -13,10 +13,12 @@ namespace fsi::io {
 namespace {
 
 /// The columns every version wrote; files written before the cavitation column existed
-/// end here and still read back (continued runs).
+/// end here, those written before the rotation column after cavitation_rate_m2ps, and
+/// both still read back (continued runs).
 constexpr const char* kCommonHeader =
     "step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,"
     "centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error";
+constexpr const char* kCavitationHeader = ",cavitation_rate_m2ps";
 constexpr const char* kNewtonHeader = ",newton_iterations,converged";
 
 /// The functionals in the header's order (after step and time_s).
@@ -24,20 +26,24 @@ constexpr double Functionals::*kColumns[] = {
     &Functionals::min_distance_m, &Functionals::bottom_y_m,   &Functionals::top_y_m,
     &Functionals::left_x_m,       &Functionals::right_x_m,    &Functionals::centroid_x_m,
     &Functionals::centroid_y_m,   &Functionals::mean_vx_mps,  &Functionals::mean_vy_mps,
-    &Functionals::solid_area_m2,  &Functionals::mass_error, &Functionals::cavitation_rate_m2ps};
-constexpr std::size_t kLegacyColumns = std::size(kColumns) - 1;  // without cavitation_rate_m2ps
+    &Functionals::solid_area_m2,  &Functionals::mass_error, &Functionals::cavitation_rate_m2ps,
+    &Functionals::rotation_rad};
+/// The functionals of the older files: without cavitation_rate_m2ps and rotation_rad, and
+/// without rotation_rad.
+constexpr std::size_t kOlderColumns[] = {std::size(kColumns) - 2, std::size(kColumns) - 1};
 
 }  // namespace
 
 std::string functionals_csv_header(bool with_newton_columns) {
-  std::string h = std::string(kCommonHeader) + ",cavitation_rate_m2ps";
+  std::string h = std::string(kCommonHeader) + kCavitationHeader + ",rotation_rad";
   if (with_newton_columns) h += kNewtonHeader;
   return h;
 }
 
 bool is_functionals_csv_header(const std::string& line, bool with_newton_columns) {
-  const std::string legacy = std::string(kCommonHeader) + (with_newton_columns ? kNewtonHeader : "");
-  return line == functionals_csv_header(with_newton_columns) || line == legacy;
+  const std::string newton = with_newton_columns ? kNewtonHeader : "";
+  return line == functionals_csv_header(with_newton_columns) || line == std::string(kCommonHeader) + newton ||
+         line == std::string(kCommonHeader) + kCavitationHeader + newton;
 }
 
 std::string functionals_csv_row(long step, double time_s, const Functionals& f) {
@@ -64,11 +70,12 @@ FunctionalsCsvRow parse_functionals_csv_row(const std::string& line) {
     begin = end + 1;
   }
   constexpr std::size_t kWithNewton = 2 + std::size(kColumns) + 2;
-  constexpr std::size_t kLegacyWithNewton = 2 + kLegacyColumns + 2;
-  if (v.size() != kWithNewton && v.size() != kLegacyWithNewton) {
+  const bool older = v.size() == 2 + kOlderColumns[0] + 2 || v.size() == 2 + kOlderColumns[1] + 2;
+  if (v.size() != kWithNewton && !older) {
     throw std::invalid_argument("expected " + std::to_string(kWithNewton) + " columns (or " +
-                                std::to_string(kLegacyWithNewton) + " in files written before " +
-                                "cavitation_rate_m2ps), got " + std::to_string(v.size()));
+                                std::to_string(2 + kOlderColumns[0] + 2) + " and " +
+                                std::to_string(2 + kOlderColumns[1] + 2) + " in files written before " +
+                                "cavitation_rate_m2ps and rotation_rad), got " + std::to_string(v.size()));
   }
   FunctionalsCsvRow r;
   r.step = static_cast<long>(v[0]);

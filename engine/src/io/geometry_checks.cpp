@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "interface/body.hpp"
 #include "io/number_text.hpp"
 #include "io/scenario_checks.hpp"
 
@@ -227,6 +228,25 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
   const std::string box = interval_text({lo.x, hi.x}) + " x " + interval_text({lo.y, hi.y});
   const Point2& c = s.body.center_m;
   const double r = s.body.radius_m;
+  const BodySpec& body = s.body;
+  const bool ball = body.shape == BodyShape::circle;
+  if (body.shape == BodyShape::rounded_rectangle && !(r <= std::min(body.half_size_m.x, body.half_size_m.y))) {
+    fail(at / "body" / "radius_m",
+         "the corner radius of a rounded rectangle must not exceed its half width or half height (half_size_m = " +
+             point_text(body.half_size_m) + "), got " + number_text(r));
+  }
+  // The point of the boundary in direction a from the centre: the shapes are star-shaped
+  // about it, so d0 changes sign once along the ray (bisection for the others).
+  const auto boundary_point = [&](double a) {
+    const double ca = std::cos(a), sa = std::sin(a);
+    if (ball) return Point2{c.x + r * ca, c.y + r * sa};
+    double lo = 0.0, hi = interface::body_reach(body) * (1.0 + 1e-9);
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (interface::initial_distance(body, {c.x + mid * ca, c.y + mid * sa}) < 0.0 ? lo : hi) = mid;
+    }
+    return Point2{c.x + hi * ca, c.y + hi * sa};
+  };
   if (!center_inside) {
     fail(at / "body" / "center_m",
          "must lie inside a mesh block (domain bounding box " + box + " m), got " + point_text(c));
@@ -237,18 +257,39 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
   constexpr int kSamples = 720;
   for (int i = 0; i < kSamples; ++i) {
     const double a = 2.0 * std::numbers::pi * i / kSamples;
-    const Point2 p{c.x + r * std::cos(a), c.y + r * std::sin(a)};
+    const Point2 p = boundary_point(a);
     const bool covered = std::any_of(quads.begin(), quads.end(),
                                      [&](const auto& quad) { return inside(quad, p); });
     if (!covered) {
-      fail(at / "body" / "radius_m",
-           "must be small enough that the ball at " + point_text(c) +
+      fail(at / "body" / (ball ? "radius_m" : "half_size_m"),
+           "must be small enough that the body at " + point_text(c) +
                " lies inside the meshed domain (the union of the blocks, bounding box " + box +
                " m); its boundary point " + point_text(p) + " lies outside every block, got " +
-               number_text(r));
+               (ball ? number_text(r) : point_text(body.half_size_m)));
     }
   }
-  for (std::size_t w = 0; w < s.walls.size(); ++w) {
+  for (std::size_t w = 0; w < s.walls.size() && !ball; ++w) {
+    // d0 of a convex body is convex along the wall: its least value by golden sections.
+    const Segment2& wall = s.walls[w];
+    const auto at_t = [&](double t) {
+      return Point2{wall.a.x + t * (wall.b.x - wall.a.x), wall.a.y + t * (wall.b.y - wall.a.y)};
+    };
+    const auto d0 = [&](double t) { const Point2 p = at_t(t); return interface::initial_distance(body, {p.x, p.y}); };
+    const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 80; ++i) {
+      const double t1 = hi - phi * (hi - lo), t2 = lo + phi * (hi - lo);
+      (d0(t1) < d0(t2) ? hi : lo) = d0(t1) < d0(t2) ? t2 : t1;
+    }
+    const double t = 0.5 * (lo + hi);
+    const double d = std::min({d0(0.0), d0(1.0), d0(t)});
+    if (!(d > 0.0)) {
+      fail(at / "body" / "center_m",
+           "the body must start clear of wall " + std::to_string(w) + ": its distance to the wall must be positive, got " +
+               number_text(d) + " m near " + point_text(at_t(t)) + " with center " + point_text(c));
+    }
+  }
+  for (std::size_t w = 0; w < s.walls.size() && ball; ++w) {
     const double d = distance_to_segment(c, s.walls[w]);
     if (!(d > r)) {
       fail(at / "body" / "center_m",

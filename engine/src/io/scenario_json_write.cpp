@@ -141,8 +141,13 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   // like walls").
   if (scenario.contact.corners_as_walls == ContactSpec{}.corners_as_walls)
     writer.object["contact"].erase("corners_as_walls");
-  // And buoyancy off, as every scenario was before the key existed.
+  // And buoyancy off and the circle, as every scenario was before the keys existed.
   if (!scenario.buoyancy) writer.object.erase("buoyancy");
+  if (scenario.body.shape == BodyShape::circle) {
+    writer.object["body"].erase("shape");
+    writer.object["body"].erase("half_size_m");
+    writer.object["body"].erase("angle_rad");
+  }
   return std::move(writer.object);
 }
 

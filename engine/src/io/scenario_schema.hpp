@@ -67,6 +67,8 @@ inline constexpr std::array<std::string_view, 3> kFailurePolicyNames{
 /// In the order of fsi::Method.
 inline constexpr std::array<std::string_view, 2> kMethodNames{"fsi", "chapter"};
 inline constexpr std::array<std::string_view, 5> kOutputFieldNames{"vx", "vy", "vmag", "p", "umag"};
+/// In the order of fsi::BodyShape.
+inline constexpr std::array<std::string_view, 3> kBodyShapeNames{"circle", "ellipse", "rounded_rectangle"};
 
 /// Coordinates and lengths: a generous box around any lab-scale set-up, and far from
 /// the range where squaring a coordinate could overflow.
@@ -115,7 +117,10 @@ void visit_fields(V& v, S& m) {
 template <class V, Like<BodySpec> S>
 void visit_fields(V& v, S& b) {
   v("center_m", b.center_m, kCoordinate);
+  v("shape", b.shape, Choice{kBodyShapeNames});
   v("radius_m", b.radius_m, Real{0.0, 1.0e3, true, false, "m"});
+  v("half_size_m", b.half_size_m, Real{0.0, 1.0e3, true, false, "m"});
+  v("angle_rad", b.angle_rad, Real{-1.0e3, 1.0e3, false, false, "rad"});
   v("initial_velocity_mps", b.initial_velocity_mps, Real{-1.0e3, 1.0e3, false, false, "m/s"});
 }
 
