@@ -44,22 +44,22 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
     if (!solid) {
       S acc[2], sigma[2][2];
       for (int i = 0; i < 2; ++i) {
-        acc[i] = c.rho_f * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1]);
-        for (int j = 0; j < 2; ++j) sigma[i][j] = mu_f * (G[i][j] + G[j][i]);
+        acc[i] = c.rho_f * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1]);  // (1), (2)
+        for (int j = 0; j < 2; ++j) sigma[i][j] = mu_f * (G[i][j] + G[j][i]);              // (3)
         sigma[i][i] -= p;
       }
-      S div = G[0][0] + G[1][1];
+      S div = G[0][0] + G[1][1];  // (6)
       // Cavitation floor: below p_cav the fluid may expand at a rate set by the deficit,
       // which keeps p from falling far below p_cav (a vapour-pressure-like limit).
       if (c.cavitation_p_pa != 0.0)
         div -= rounded_ramp(c.cavitation_p_pa - p, c.cavitation_smoothing_pa) / mu_f;
       for (int a = 0; a < n; ++a) {
         const double N = qp.value[a], dx = qp.grad[a].x(), dy = qp.grad[a].y();
-        for (int i = 0; i < 2; ++i) r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);
+        for (int i = 0; i < 2; ++i) r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);  // (1)-(3)
         if (!in.u_row_solid[a])
           for (int i = 0; i < 2; ++i)
-            r[5 * a + 2 + i] += (w * c.extension_u) * (H[i][0] * dx + H[i][1] * dy);
-        r[5 * a + 4] += (w * N) * div;
+            r[5 * a + 2 + i] += (w * c.extension_u) * (H[i][0] * dx + H[i][1] * dy);  // (7)
+        r[5 * a + 4] += (w * N) * div;                                                // (6)
       }
     } else {
       // F = I - grad u (the inverse of the Lagrangian deformation gradient).
@@ -73,7 +73,7 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
       const S trE = E00 + E11;
       const S S00 = 2.0 * c.mu_s * E00 + c.lambda_s * trE, S01 = 2.0 * c.mu_s * E01;
       const S S11 = 2.0 * c.mu_s * E11 + c.lambda_s * trE;
-      // sigma = J F^-1 S F^-T
+      // sigma = J F^-1 S F^-T  (10)
       const S A00 = Fi00 * S00 + Fi01 * S01, A01 = Fi00 * S01 + Fi01 * S11;
       const S A10 = Fi10 * S00 + Fi11 * S01, A11 = Fi10 * S01 + Fi11 * S11;
       S sigma[2][2];
@@ -86,25 +86,25 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
       S acc[2], du[2];
       for (int i = 0; i < 2; ++i) {
         // Weight rho g, less the displaced fluid's rho_f g with buoyancy (Scenario::buoyancy).
-        acc[i] = rho * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1] - g[i]) + c.rho_buoyancy * g[i];
-        du[i] = (u[i] - u_old[i]) * inv_k + wc[0] * H[i][0] + wc[1] * H[i][1] - v[i];
+        acc[i] = rho * ((v[i] - v_old[i]) * inv_k + wc[0] * G[i][0] + wc[1] * G[i][1] - g[i]) + c.rho_buoyancy * g[i];  // (8), (9)
+        du[i] = (u[i] - u_old[i]) * inv_k + wc[0] * H[i][0] + wc[1] * H[i][1] - v[i];  // (11)
       }
       for (int a = 0; a < n; ++a) {
         const double N = qp.value[a], dx = qp.grad[a].x(), dy = qp.grad[a].y();
         for (int i = 0; i < 2; ++i) {
-          r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);
+          r[5 * a + i] += w * (acc[i] * N + sigma[i][0] * dx + sigma[i][1] * dy);  // (8)-(10)
           if (in.u_row_released[a])
-            r[5 * a + 2 + i] += (w * c.extension_u) * (H[i][0] * dx + H[i][1] * dy);
+            r[5 * a + 2 + i] += (w * c.extension_u) * (H[i][0] * dx + H[i][1] * dy);  // (7)
           else
-            r[5 * a + 2 + i] += w * (du[i] * N - stab * (G[i][0] * dx + G[i][1] * dy));
+            r[5 * a + 2 + i] += w * (du[i] * N - stab * (G[i][0] * dx + G[i][1] * dy));  // (11), (12)
         }
-        if (!in.p_row_fluid[a]) r[5 * a + 4] += (w * c.extension_p) * (gp[0] * dx + gp[1] * dy);
+        if (!in.p_row_fluid[a]) r[5 * a + 4] += (w * c.extension_p) * (gp[0] * dx + gp[1] * dy);  // (13)
       }
     }
   }
 
-  // Do-nothing correction on open boundaries: - <rho_f nu_f grad v^T n, phi>; and where
-  // fluid flows in, the backflow term - <beta rho_f / 2 (v.n)_- v, phi>. Tested with v
+  // Do-nothing correction on open boundaries: (4) - <rho_f nu_f grad v^T n, phi>; and where
+  // fluid flows in, the backflow term (5) - <beta rho_f / 2 (v.n)_- v, phi>. Tested with v
   // it adds beta rho_f / 2 |v.n_-| |v|^2 >= 0, which cancels the kinetic energy the
   // convective term lets in through the boundary (it is rho_f / 2 (v.n) |v|^2 there).
   if (!solid)
@@ -119,12 +119,12 @@ void element_residual(const ElementInput& in, const FsiCoefficients& c,
             G[i][1] += sv.grad[a].y() * x[5 * a + i];
             vb[i] += sv.value[a] * x[5 * a + i];
           }
-        // (grad v^T n)_i = sum_j G[j][i] n_j
+        // (grad v^T n)_i = sum_j G[j][i] n_j  (4)
         S t[2] = {mu_f * (G[0][0] * side.nx + G[1][0] * side.ny),
                   mu_f * (G[0][1] * side.nx + G[1][1] * side.ny)};
         const S vn = vb[0] * side.nx + vb[1] * side.ny;
         if (c.backflow_beta > 0.0 && value_of(vn) < 0.0)
-          for (int i = 0; i < 2; ++i) t[i] += (0.5 * c.backflow_beta * c.rho_f) * vn * vb[i];
+          for (int i = 0; i < 2; ++i) t[i] += (0.5 * c.backflow_beta * c.rho_f) * vn * vb[i];  // (5)
         for (int a = 0; a < n; ++a)
           for (int i = 0; i < 2; ++i) r[5 * a + i] -= (side.weight[q] * sv.value[a]) * t[i];
       }

@@ -1,20 +1,26 @@
 #pragma once
 /// \file fsi_element.hpp
 /// The monolithic FSI residual of one sub-element: the modified dG(0) step of
-/// Sect. 12.3 for (v, u, p), divided by the time step k.
+/// Sect. 12.3 for (v, u, p), divided by the time step k. The terms are numbered; the
+/// lines of element_residual that assemble them carry the numbers (fsi_element.cpp).
 ///
 /// Fluid sub-element (rho_f, sigma_f = rho_f nu_f (grad v + grad v^T) - p I):
-///   momentum   (rho_f ((v - v_old∘T)/k + ((v - d_t T) . grad) v), phi) + (sigma_f, grad phi)
-///              - <rho_f nu_f grad v^T n, phi>_{open boundary}        (do-nothing correction, 12.1)
-///              - <beta rho_f / 2 (v.n)_- v, phi>_{open boundary}    (backflow, 0 by default)
-///   pressure   (div v - ramp(p_cav - p) / (rho_f nu_f), xi)_F   [+ S_aniso(p, xi), assembled
+///   momentum   (1) (rho_f (v - v_old∘T)/k, phi) + (2) (rho_f ((v - d_t T) . grad) v, phi)
+///              + (3) (sigma_f, grad phi)
+///              - (4) <rho_f nu_f grad v^T n, phi>_{open boundary}     (do-nothing correction, 12.1)
+///              - (5) <beta rho_f / 2 (v.n)_- v, phi>_{open boundary} (backflow, 0 by default)
+///   pressure   (6) (div v - ramp(p_cav - p) / (rho_f nu_f), xi)_F  [+ S_aniso(p, xi), assembled
 ///              separately; the ramp is the optional cavitation floor, 0 by default]
-///   displacement: harmonic extension (grad u, grad psi)_F on nodes not touching the solid
+///   displacement (7) harmonic extension (grad u, grad psi)_F on nodes not touching the solid
 /// Solid sub-element (St. Venant-Kirchhoff, Eulerian, 12.2; F = I - grad u, J = det F,
 /// E = (F^-T F^-1 - I)/2, sigma_s = J F^-1 (2 mu E + lambda tr E I) F^-T, rho_s = J rho_s^0):
-///   momentum   (rho_s ((v - v_old∘T)/k + ((v - d_t T) . grad) v) - rho_s g, phi) + (sigma_s, grad phi)
-///   displacement ((u - u_old∘T)/k + ((v - d_t T) . grad) u - v, psi)_S - alpha h^s (grad v, grad psi)_S   (12.7)
-///   pressure: harmonic extension (grad p, grad xi)_S on nodes not touching the fluid
+///   momentum   (8) (rho_s ((v - v_old∘T)/k + ((v - d_t T) . grad) v), phi)
+///              - (9) ((rho_s - rho_b) g, phi) + (10) (sigma_s, grad phi)
+///              (rho_b = rho_f with buoyancy, else 0)
+///   displacement (11) ((u - u_old∘T)/k + ((v - d_t T) . grad) u - v, psi)_S
+///              - (12) alpha h^s (grad v, grad psi)_S   (12.7);
+///              at a wall node the solid lets go of, (7) instead (core/contact_release.hpp)
+///   pressure   (13) harmonic extension (grad p, grad xi)_S on nodes not touching the fluid
 ///
 /// Test spaces: a displacement row belongs to the solid equation as soon as its node
 /// touches a solid sub-element (W_s), otherwise to the extension; a pressure row to
