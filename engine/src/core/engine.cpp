@@ -441,6 +441,41 @@ struct Engine::Impl {
     return p;
   }
 
+  /// What the attempts at one step leave behind for the step's report: the best attempt
+  /// so far (halve_step keeps the one that reduced its residual most, relative to its own
+  /// start, both in one row scale: when every halving fails too, that one is accepted and
+  /// flagged, never simply the last, since after real contact smaller steps can do worse;
+  /// what counts as an attempt to keep: core::judge_attempt), why an unconverged step was
+  /// accepted as it is or rejected, and the residuals of the attempt kept.
+  struct StepAttempts {
+    Eigen::VectorXd best_x;
+    double best_k = 0.0;
+    double best_reduction = std::numeric_limits<double>::infinity();
+    double best_final = std::numeric_limits<double>::infinity();  ///< its last scaled residual
+    double best_first = std::numeric_limits<double>::infinity();  ///< its first
+    ResidualPeak best_peak;
+    std::optional<Outcome> best_outcome;
+    bool best_turned = false;
+    std::string policy_note;  ///< why an unconverged step was accepted as it is, or rejected
+    /// The residual of the attempt the step keeps, for the message: report.residual_norms
+    /// runs through every attempt, so its last entry is the last attempt's, which after
+    /// accept_best is not the one accepted.
+    double kept_first = std::numeric_limits<double>::quiet_NaN();
+    double kept_last = std::numeric_limits<double>::quiet_NaN();
+    std::optional<core::Degeneration> broken;  ///< of the latest attempt that broke the body
+    int halvings = 0;
+    /// In real contact a step that does not converge is first tried again at the same
+    /// length with the wall's hold turned round (release_wall_nodes): the hold is decided
+    /// explicitly from the step's start, and where the wall's force is about to change
+    /// sign it can pick the wrong side. The side wall throw of assets/scenarios/impacts/
+    /// held its contact patch at t = 1.183 s as the ball left the wall and did not
+    /// converge at any halving; released, that step converged (docs/method.md, "Letting
+    /// go of a wall").
+    bool contact_turned = false;
+  };
+
+  /// One step: its length, the attempts at it (retries and failure policy in
+  /// run_attempts), the report.
   StepReport step() {
     StepReport report;
     double k = core::choose_time_step(
@@ -448,165 +483,176 @@ struct Engine::Impl {
         state.time_step_limit_s,
         core::solid_motion(cut_cur, state.solution, cut_prev, state.previous_solution, state.time_step_s));
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
-    // With halve_step, the attempt that reduced its residual most (relative to its own
-    // start, both in one row scale) is kept: when every halving fails too, that one is
-    // accepted and flagged, never simply the last (after real contact smaller steps can do
-    // worse). What counts as an attempt to keep: core::judge_attempt.
-    Eigen::VectorXd best_x;
-    std::string policy_note;  // why an unconverged step was accepted as it is, or rejected
-    double best_k = k, best_reduction = std::numeric_limits<double>::infinity();
-    double best_final = std::numeric_limits<double>::infinity();  // its last scaled residual
-    double best_first = best_final;                                // its first
-    ResidualPeak best_peak;
-    // The residual of the attempt the step keeps, for the message: report.residual_norms
-    // runs through every attempt, so its last entry is the last attempt's, which after
-    // accept_best is not the one accepted.
-    double kept_first = std::numeric_limits<double>::quiet_NaN(), kept_last = kept_first;
-    std::optional<Outcome> best_outcome;
-    std::optional<core::Degeneration> broken;  // of the latest attempt that broke the body
-    const bool may_halve = scenario.numerics.failure_policy == FailurePolicy::halve_step;
-    // In real contact a step that does not converge is first tried again at the same
-    // length with the wall's hold turned round (release_wall_nodes): the hold is decided
-    // explicitly from the step's start, and where the wall's force is about to change
-    // sign it can pick the wrong side. The side wall throw of assets/scenarios/impacts/
-    // held its contact patch at t = 1.183 s as the ball left the wall and did not
-    // converge at any halving; released, that step converged (docs/method.md, "Letting
-    // go of a wall").
-    int halvings = 0;
-    bool contact_turned = false, best_turned = false;
-    for (int attempt_no = 0;; ++attempt_no) {
-      Eigen::VectorXd x;
-      const solve::NewtonResult r = attempt(k, quad, x, report, contact_turned);
-      const bool finite = !r.non_finite && x.allFinite();
-      report.largest_residual = residual_peak(r);
-      report.converged = r.converged && finite;
-      core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, halvings, best_x.size() > 0);
-      // A solution the step would keep (now, or later as the best attempt) must leave a
-      // sound body: a broken one is retried shorter (halve_step) or rolled back.
-      std::optional<Outcome> outcome;
-      bool this_broke = false;
-      if (verdict.action == core::AttemptAction::accept || verdict.candidate) {
-        const auto t0 = std::chrono::steady_clock::now();
-        outcome = outcome_of(x, quad);
-        std::optional<core::Degeneration> d = degeneration(x, k, quad, *outcome);
-        report.geometry_seconds += seconds_since(t0);
-        if (d) {
-          this_broke = true;
-          report.converged = false;
-          report.events.push_back({StepEvent::Kind::degenerated, state.time_s + k, d->where_m, -1,
-                                   "the solution of a step of " + std::to_string(k) + " s broke the body: " + d->cause});
-          broken = std::move(d);
-          outcome.reset();
-          verdict.candidate = false;
-          verdict.flagged_early = false;
-          if (may_halve && halvings < scenario.numerics.max_halvings)
-            verdict.action = core::AttemptAction::retry_halved;
-          else if (may_halve && best_x.size() > 0)
-            verdict.action = core::AttemptAction::accept_best;
-          else
-            verdict.action = core::AttemptAction::give_up;
-        }
-      }
-      if (verdict.candidate && r.relative_residual < best_reduction) {
-        best_reduction = r.relative_residual;
-        best_final = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.back();
-        best_first = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.front();
-        best_x = x;
-        best_k = k;
-        best_peak = report.largest_residual;
-        best_outcome = outcome;
-        best_turned = contact_turned;
-      }
-      if (verdict.action == core::AttemptAction::accept) {
-        if (!r.norms.empty()) kept_first = r.norms.front(), kept_last = r.norms.back();
-        const double tolerance_m = scenario.numerics.time_error_tolerance_m;
-        if (tolerance_m > 0.0 && state.step >= 1)
-          report.time_error_m = core::displacement_error_estimate(cut_prev, state.previous_solution, cut_cur,
-                                                                  state.solution, cut_next, x, state.time_step_s, k);
-        accept(std::move(x), k, std::move(quad), std::move(*outcome), report);
-        if (contact_turned) forget_factorization();
-        report.accepted = true;
-        state.time_step_limit_s = core::next_time_step_limit(
-            {k, attempt_no == 0 && report.converged, r.iterations}, scenario.numerics.time_step_s);
-        if (report.time_error_m >= 0.0)
-          state.time_step_limit_s =
-              std::min(state.time_step_limit_s, core::step_for_error(k, report.time_error_m, tolerance_m));
-        if (verdict.flagged_early) {
-          std::ostringstream why;
-          why << "accepted without halving: residual at " << r.relative_residual
-              << " of its start (accept_flagged_reduction), " << r.norms.back()
-              << " scaled (accept_flagged_max_residual)";
-          policy_note = why.str();
-        }
-        break;
-      }
-      if (verdict.action == core::AttemptAction::retry_halved && attempt_no == 0 && last_attempt_in_contact) {
-        contact_turned = true;
-        report.events.push_back({StepEvent::Kind::contact_retried, state.time_s, {}, -1,
-                                 (this_broke ? "the body broke" : "Newton did not converge") +
-                                     std::string(" in real contact: retrying with the wall's hold turned round")});
-        continue;
-      }
-      contact_turned = false;  // the halvings hold as decided
-      if (verdict.action == core::AttemptAction::retry_halved) {
-        ++halvings;
-        k *= 0.5;
-        report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
-                                 (this_broke ? "the body broke" : "Newton did not converge") +
-                                     std::string(": retrying with k = ") + std::to_string(k)});
-        continue;
-      }
-      const double bound = scenario.numerics.accept_best_max_residual;
-      if (verdict.action == core::AttemptAction::accept_best && bound > 0.0 && !(best_final <= bound)) {
-        // The best attempt solves nothing: stop here rather than go on from it.
-        report.accepted = false;
-        std::ostringstream why;
-        why << "no attempt got below accept_best_max_residual = " << bound << " (the best ended at "
-            << best_final << " scaled): rolled back to the state before the step";
-        report.events.push_back({StepEvent::Kind::rolled_back, state.time_s, {}, -1, why.str()});
-        policy_note = why.str();
-        break;
-      }
-      if (verdict.action == core::AttemptAction::accept_best) {
-        std::ostringstream why;
-        why << "accepted the best of " << attempt_no + 1 << " attempt(s), k = " << best_k << " s";
-        policy_note = why.str();
-        kept_first = best_first, kept_last = best_final;
-        k = best_k;
-        report.largest_residual = best_peak;
-        report.converged = false;
-        accept(std::move(best_x), k, std::move(quad), std::move(*best_outcome), report);
-        if (best_turned || contact_turned) forget_factorization();  // kept or held last
-        report.accepted = true;
-        state.time_step_limit_s = core::next_time_step_limit({k, false, 0}, scenario.numerics.time_step_s);
-        break;
-      }
-      // give_up: stop_and_rollback, no attempt that moved Newton's iterate, a non-finite
-      // result (NaN/Inf never leaves the engine), or a broken body.
-      report.accepted = false;
-      std::string why = "rolled back to the state before the step";
-      if (broken) {
-        std::ostringstream b;
-        b << "the step broke the body (" << broken->cause << ", at (" << broken->where_m.x << ", "
-          << broken->where_m.y << ") m): " << why;
-        why = b.str();
-        policy_note = "the body broke: " + broken->cause;
-      } else if (finite && !core::made_progress(r) && scenario.numerics.failure_policy != FailurePolicy::stop_and_rollback) {
-        why = "Newton made no progress (no iterate reduced the residual; accepting would freeze the body): " + why;
-      }
-      report.events.push_back({finite ? StepEvent::Kind::rolled_back : StepEvent::Kind::non_finite,
-                               state.time_s, {}, -1,
-                               finite ? why : "non-finite values: step rejected, state rolled back"});
-      if (!broken && finite && !core::made_progress(r)) policy_note = "Newton made no progress";
-      break;
-    }
+    StepAttempts attempts;
+    attempts.best_k = k;
+    run_attempts(k, quad, report, attempts);
     if (system.max_contact_pressure() > 0.0)
       report.events.push_back({StepEvent::Kind::contact_force_active, state.time_s, {}, -1,
                                "penalty contact active, max pressure " +
                                    std::to_string(system.max_contact_pressure()) + " Pa, force on the body (" +
                                    std::to_string(system.contact_force_on_body().x()) + ", " +
                                    std::to_string(system.contact_force_on_body().y()) + ") N/m"});
-    report.message = policy_note;
+    finish_report(k, attempts, report);
+    return report;
+  }
+
+  /// Attempts at the step of length k until one is accepted, the best is accepted or the
+  /// step is rolled back (numerics.failure_policy); k ends as the accepted length.
+  void run_attempts(double& k, fe::QuadratureTable& quad, StepReport& report, StepAttempts& a) {
+    const bool may_halve = scenario.numerics.failure_policy == FailurePolicy::halve_step;
+    for (int attempt_no = 0;; ++attempt_no) {
+      Eigen::VectorXd x;
+      const solve::NewtonResult r = attempt(k, quad, x, report, a.contact_turned);
+      const bool finite = !r.non_finite && x.allFinite();
+      report.largest_residual = residual_peak(r);
+      report.converged = r.converged && finite;
+      core::AttemptVerdict verdict = core::judge_attempt(scenario.numerics, r, finite, a.halvings, a.best_x.size() > 0);
+      std::optional<Outcome> outcome;
+      const bool this_broke = check_body(x, k, quad, may_halve, verdict, outcome, report, a);
+      if (verdict.candidate && r.relative_residual < a.best_reduction) {
+        a.best_reduction = r.relative_residual;
+        a.best_final = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.back();
+        a.best_first = r.norms.empty() ? std::numeric_limits<double>::infinity() : r.norms.front();
+        a.best_x = x;
+        a.best_k = k;
+        a.best_peak = report.largest_residual;
+        a.best_outcome = outcome;
+        a.best_turned = a.contact_turned;
+      }
+      if (verdict.action == core::AttemptAction::accept) {
+        accept_attempt(std::move(x), k, quad, std::move(*outcome), r, attempt_no, verdict, report, a);
+        return;
+      }
+      const std::string why_retry = this_broke ? "the body broke" : "Newton did not converge";
+      if (verdict.action == core::AttemptAction::retry_halved && attempt_no == 0 && last_attempt_in_contact) {
+        a.contact_turned = true;
+        report.events.push_back({StepEvent::Kind::contact_retried, state.time_s, {}, -1,
+                                 why_retry + " in real contact: retrying with the wall's hold turned round"});
+        continue;
+      }
+      a.contact_turned = false;  // the halvings hold as decided
+      if (verdict.action == core::AttemptAction::retry_halved) {
+        ++a.halvings;
+        k *= 0.5;
+        report.events.push_back({StepEvent::Kind::step_halved, state.time_s, {}, -1,
+                                 why_retry + ": retrying with k = " + std::to_string(k)});
+        continue;
+      }
+      if (verdict.action == core::AttemptAction::accept_best) {
+        accept_best_attempt(k, quad, attempt_no, report, a);
+        return;
+      }
+      give_up(r, finite, report, a);
+      return;
+    }
+  }
+
+  /// A solution the step would keep (now, or later as the best attempt) must leave a
+  /// sound body: its outcome is computed, and a broken one is retried shorter (halve_step)
+  /// or rolled back (verdict changed so). True if the attempt broke the body.
+  bool check_body(const Eigen::VectorXd& x, double k, const fe::QuadratureTable& quad, bool may_halve,
+                  core::AttemptVerdict& verdict, std::optional<Outcome>& outcome, StepReport& report,
+                  StepAttempts& a) {
+    if (verdict.action != core::AttemptAction::accept && !verdict.candidate) return false;
+    const auto t0 = std::chrono::steady_clock::now();
+    outcome = outcome_of(x, quad);
+    std::optional<core::Degeneration> d = degeneration(x, k, quad, *outcome);
+    report.geometry_seconds += seconds_since(t0);
+    if (!d) return false;
+    report.converged = false;
+    report.events.push_back({StepEvent::Kind::degenerated, state.time_s + k, d->where_m, -1,
+                             "the solution of a step of " + std::to_string(k) + " s broke the body: " + d->cause});
+    a.broken = std::move(d);
+    outcome.reset();
+    verdict.candidate = false;
+    verdict.flagged_early = false;
+    if (may_halve && a.halvings < scenario.numerics.max_halvings)
+      verdict.action = core::AttemptAction::retry_halved;
+    else if (may_halve && a.best_x.size() > 0)
+      verdict.action = core::AttemptAction::accept_best;
+    else
+      verdict.action = core::AttemptAction::give_up;
+    return true;
+  }
+
+  /// The attempt converged (or is accepted flagged at once): the state moves on, and the
+  /// next step's limit follows from how this one went (and from the time error).
+  void accept_attempt(Eigen::VectorXd x, double k, fe::QuadratureTable& quad, Outcome outcome,
+                      const solve::NewtonResult& r, int attempt_no, const core::AttemptVerdict& verdict,
+                      StepReport& report, StepAttempts& a) {
+    if (!r.norms.empty()) a.kept_first = r.norms.front(), a.kept_last = r.norms.back();
+    const double tolerance_m = scenario.numerics.time_error_tolerance_m;
+    if (tolerance_m > 0.0 && state.step >= 1)
+      report.time_error_m = core::displacement_error_estimate(cut_prev, state.previous_solution, cut_cur,
+                                                              state.solution, cut_next, x, state.time_step_s, k);
+    accept(std::move(x), k, std::move(quad), std::move(outcome), report);
+    if (a.contact_turned) forget_factorization();
+    report.accepted = true;
+    state.time_step_limit_s = core::next_time_step_limit(
+        {k, attempt_no == 0 && report.converged, r.iterations}, scenario.numerics.time_step_s);
+    if (report.time_error_m >= 0.0)
+      state.time_step_limit_s =
+          std::min(state.time_step_limit_s, core::step_for_error(k, report.time_error_m, tolerance_m));
+    if (verdict.flagged_early) {
+      std::ostringstream why;
+      why << "accepted without halving: residual at " << r.relative_residual
+          << " of its start (accept_flagged_reduction), " << r.norms.back()
+          << " scaled (accept_flagged_max_residual)";
+      a.policy_note = why.str();
+    }
+  }
+
+  /// Every halving failed: the best attempt is accepted and flagged, unless it solves
+  /// nothing (numerics.accept_best_max_residual), when the step is rolled back.
+  void accept_best_attempt(double& k, fe::QuadratureTable& quad, int attempt_no, StepReport& report,
+                           StepAttempts& a) {
+    const double bound = scenario.numerics.accept_best_max_residual;
+    if (bound > 0.0 && !(a.best_final <= bound)) {
+      // The best attempt solves nothing: stop here rather than go on from it.
+      report.accepted = false;
+      std::ostringstream why;
+      why << "no attempt got below accept_best_max_residual = " << bound << " (the best ended at "
+          << a.best_final << " scaled): rolled back to the state before the step";
+      report.events.push_back({StepEvent::Kind::rolled_back, state.time_s, {}, -1, why.str()});
+      a.policy_note = why.str();
+      return;
+    }
+    std::ostringstream why;
+    why << "accepted the best of " << attempt_no + 1 << " attempt(s), k = " << a.best_k << " s";
+    a.policy_note = why.str();
+    a.kept_first = a.best_first, a.kept_last = a.best_final;
+    k = a.best_k;
+    report.largest_residual = a.best_peak;
+    report.converged = false;
+    accept(std::move(a.best_x), k, std::move(quad), std::move(*a.best_outcome), report);
+    if (a.best_turned || a.contact_turned) forget_factorization();  // kept or held last
+    report.accepted = true;
+    state.time_step_limit_s = core::next_time_step_limit({k, false, 0}, scenario.numerics.time_step_s);
+  }
+
+  /// The step is rolled back: stop_and_rollback, no attempt that moved Newton's iterate,
+  /// a non-finite result (NaN/Inf never leaves the engine), or a broken body.
+  void give_up(const solve::NewtonResult& r, bool finite, StepReport& report, StepAttempts& a) {
+    report.accepted = false;
+    std::string why = "rolled back to the state before the step";
+    if (a.broken) {
+      std::ostringstream b;
+      b << "the step broke the body (" << a.broken->cause << ", at (" << a.broken->where_m.x << ", "
+        << a.broken->where_m.y << ") m): " << why;
+      why = b.str();
+      a.policy_note = "the body broke: " + a.broken->cause;
+    } else if (finite && !core::made_progress(r) && scenario.numerics.failure_policy != FailurePolicy::stop_and_rollback) {
+      why = "Newton made no progress (no iterate reduced the residual; accepting would freeze the body): " + why;
+    }
+    report.events.push_back({finite ? StepEvent::Kind::rolled_back : StepEvent::Kind::non_finite,
+                             state.time_s, {}, -1,
+                             finite ? why : "non-finite values: step rejected, state rolled back"});
+    if (!a.broken && finite && !core::made_progress(r)) a.policy_note = "Newton made no progress";
+  }
+
+  /// The report's message, length and time once the step is decided.
+  void finish_report(double k, const StepAttempts& a, StepReport& report) const {
+    report.message = a.policy_note;
     if (last_ips_failures > 0)
       report.message += (report.message.empty() ? "" : "; ") + std::to_string(last_ips_failures) +
                         " IPS point(s) did not converge";
@@ -616,8 +662,8 @@ struct Engine::Impl {
     msg << (report.converged ? "converged" : "NOT converged") << " in " << report.newton_iterations
         << " Newton iteration(s), " << report.factorizations << " factorization(s)";
     if (report.krylov_iterations > 0) msg << ", " << report.krylov_iterations << " GMRES iteration(s)";
-    if (report.accepted && std::isfinite(kept_first))
-      msg << ", residual " << kept_first << " -> " << kept_last;
+    if (report.accepted && std::isfinite(a.kept_first))
+      msg << ", residual " << a.kept_first << " -> " << a.kept_last;
     else if (!report.residual_norms.empty())
       msg << ", residual " << report.residual_norms.front() << " -> " << report.residual_norms.back();
     if (const ResidualPeak& w = report.largest_residual; !report.converged && w.node >= 0)
@@ -625,7 +671,6 @@ struct Engine::Impl {
           << w.where_m.x << ", " << w.where_m.y << ") m, " << w.phase;
     if (!report.accepted) msg << "; step rejected";
     report.message = msg.str() + (report.message.empty() ? "" : "; " + report.message);
-    return report;
   }
 };
 
