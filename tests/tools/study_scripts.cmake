@@ -3,7 +3,8 @@
 #    dimple's rim while the ball still approaches, a run that stopped while rising);
 #  - tools/study-common.sh's --set/--out: a run directory records its settings, is reused
 #    with the same ones, continued to a later end time and refused with other settings
-#    (a stub stands in for fsi-movie); tools/validate-example1's rows likewise.
+#    (a stub stands in for fsi-movie); tools/validate-example1's rows likewise;
+#  - tools/study-shapes' landing, bounce and rotation on a stub run.
 # Inputs: -DSOURCE_DIR -DBINARY_DIR.
 find_program(AWK NAMES awk mawk gawk REQUIRED)
 find_program(BASH bash REQUIRED)
@@ -243,3 +244,27 @@ execute_process(COMMAND ${BASH} -c "source '${SOURCE_DIR}/tools/study-common.sh'
 if(NOT _rc EQUAL 0 OR NOT _walls STREQUAL "0,2.8,0,1.4;0,1.4,1.2,1\n0,2.8,0,1.4;0,1.4,1.2,1\n")
   message(FATAL_ERROR "study_walls: got '${_walls}' (exit ${_rc})")
 endif()
+
+# tools/study-shapes: the landing (the first gap below dist_0 until the gap is back above
+# it), its smallest gap, the largest gap after that (the bounce) and the rotations, from a
+# stub run that lands at t = 1 s, comes within 2 mm and bounces back to 2 cm.
+set(_shapes_stub ${_dir}/fake-fsi-movie-shapes)
+file(WRITE ${_shapes_stub} "#!/usr/bin/env bash
+dir=$2; mkdir -p \"$dir\"
+printf 'step,time_s,min_distance_m,mean_vy_mps,mass_error,rotation_rad,converged\\n0,0,0.3,-0.2,0.001,0,1\\n1,1,0.005,-0.1,0.002,-0.1,1\\n2,1.1,0.002,-0.01,0.002,-0.15,1\\n3,1.2,0.02,0.05,0.003,-0.2,1\\n4,1.3,0.015,0.01,0.002,-0.3,1\\n' > \"$dir/functionals.csv\"
+printf '{\\n  \"contact\": {\"gamma_c\": 800, \"dist0_m\": 0.01},\\n  \"numerics\": {\"time_step_s\": 0.002}\\n}\\n' > \"$dir/scenario.json\"
+printf '{\\n  \"final\": true,\\n  \"stop_reason\": \"\",\\n  \"simulated_time_s\": 1.3,\\n  \"contact_sequence\": \"\"\\n}\\n' > \"$dir/summary.json\"
+")
+file(CHMOD ${_shapes_stub} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+execute_process(COMMAND env FSI_STUDY_NO_BUILD=1 FSI_MOVIE=${_shapes_stub}
+    ${BASH} ${SOURCE_DIR}/tools/study-shapes --jobs 1 --end-time 1.3 --only ellipse --out ${_dir}/shapes
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+file(STRINGS ${_dir}/shapes/summary.csv _rows)
+list(GET _rows 1 _row)
+if(NOT _rc EQUAL 0 OR NOT _row STREQUAL "ellipse,1.3000,5,0,1.0000,0.002,0.05,0.02,-0.1000,-0.3000,0.003")
+  message(FATAL_ERROR "study-shapes: exit ${_rc}, summary row '${_row}'\n${_out}${_err}")
+endif()
+if(NOT _out MATCHES "ellipse: lands at t = 1.0000 s \\(gap 0.002 m\\), bounces \\(the gap grows to 0.02 m\\), turns by -0.3000 rad, every step converged: yes")
+  message(FATAL_ERROR "study-shapes: no verdict of a bounce\n${_out}${_err}")
+endif()
+message("study-shapes: ${_row}")
