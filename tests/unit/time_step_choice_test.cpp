@@ -142,9 +142,10 @@ TEST(TimeStepChoice, InTheWallZoneLongerStepsOnlyForASlowBodyWhenAllowed) {
   // Real contact at rest: the zone's longest step, as far as the patch rule allows.
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0, 0.0, 0.0), 0.004, 1.0), 4e-3);
   // An interface through a wall node whose distance is 0 only up to rounding (Example 1
-  // at rest: 1e-17 to 5e-17 m, 1e-6 m/s) counts as a gap: k (longer steps there left
-  // steps unconverged).
-  EXPECT_DOUBLE_EQ(choose_time_step(n, body(2e-17, 0.0, -1e-6), 0.004, 1.0), 1e-3);
+  // at rest: 1e-17 to 5e-17 m, 1e-6 m/s) touches the wall: 2k at most (kTouchingStepFactor);
+  // a gap of a micrometre is a gap (four steps of 2e-3 s at 1 mm/s would cross it 8 times).
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(2e-17, 0.0, -1e-6), 0.004, 1.0), 2e-3);
+  EXPECT_DOUBLE_EQ(choose_time_step(n, body(1e-6, 0.0, -1e-3), 0.004, 1.0), 1e-3);
   // Real contact at 0.02 m/s in 4 mm rows: 2e-3 s moves it 0.04 mm (1/100 of the row),
   // 4e-3 s 0.08 mm, within the 1/32 (0.125 mm); at 0.05 m/s 2e-3 s (0.1 mm).
   EXPECT_DOUBLE_EQ(choose_time_step(n, body(0.0, 0.02, 0.0), 0.004, 1.0), 4e-3);

@@ -52,14 +52,12 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
   const double history_s = history_limit_s > 0.0 ? history_limit_s : n.time_step_max_s();
   const double longest_s = std::min(n.time_step_max_s(), history_s);
   // In the wall zone only up to time_step_wall_zone_max_s() (0: k).
-  const double longest_in_zone_s = std::min(std::max(k, n.time_step_wall_zone_max_s()), longest_s);
+  double longest_in_zone_s = std::min(std::max(k, n.time_step_wall_zone_max_s()), longest_s);
   // In real contact (distance 0 with an interface) the wall itself is no distance away:
   // only a body at rest there takes longer steps, by the patch rule alone.
-  // An interface through a wall node measures 1e-17 to 5e-17 m (the rounding of the node's
-  // coordinates), which this test takes for a gap: Example 1 resting on the ground keeps
-  // k. Counted as contact (below 1e-12 m), its 8e-3 s steps at rest left 13 steps
-  // unconverged at t = 5.08-5.11 s, even halved to 2.5e-4 s; with k, none up to 10 s.
-  const bool real_contact = !(f.min_distance_m > 0.0) && std::isfinite(cut_patch_side_m);
+  const bool touching = f.min_distance_m > 0.0 && f.min_distance_m < kTouchingDistance_m;
+  const bool real_contact = (!(f.min_distance_m > 0.0) || touching) && std::isfinite(cut_patch_side_m);
+  if (touching) longest_in_zone_s = std::min(longest_in_zone_s, kTouchingStepFactor * k);
   const double gap_m = f.min_distance_m - n.time_step_wall_zone_m;
   const double speed_mps = std::hypot(f.mean_vx_mps, f.mean_vy_mps);
   // In the zone: what the solid's nodes reach soon, not only the mean (see
