@@ -8,19 +8,13 @@
 namespace fsi::app {
 namespace {
 
-/// The body's size below its centre [m]: the ball's radius, the larger half size of the
-/// other shapes (a bound good enough for a colour range).
-double body_size(const Scenario& s) {
-  return s.body.shape == BodyShape::circle ? s.body.radius_m : std::max(s.body.half_size_m.x, s.body.half_size_m.y);
-}
-
 /// Height of the body's lowest point above the lowest wall point [m] (walls absent:
 /// the bottom of the domain).
 double fall_height(const Scenario& s, const FieldView& view) {
   double floor_y = std::numeric_limits<double>::infinity();
   for (const Segment2& w : s.walls) floor_y = std::min({floor_y, w.a.y, w.b.y});
   if (!std::isfinite(floor_y)) floor_y = view.domain_min.y;
-  return std::max(0.0, s.body.center_m.y - body_size(s) - floor_y);
+  return std::max(0.0, s.body.center_m.y - body_reach(s.body) - floor_y);
 }
 
 }  // namespace
@@ -41,7 +35,7 @@ render::ColorRange movie_color_range(const Scenario& s, render::Quantity q,
     case render::Quantity::vmag:
       return {0.0, v};
     case render::Quantity::umag:
-      return {0.0, std::max(kMargin * (h + body_size(s)), 1e-6)};
+      return {0.0, std::max(kMargin * (h + body_reach(s.body)), 1e-6)};
     case render::Quantity::p: {
       const render::ColorRange seen = render::auto_range(first, q);
       const double m = std::max(s.fluid.density_kgpm3 * v * v,

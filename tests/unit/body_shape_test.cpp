@@ -100,13 +100,13 @@ TEST(BodyShape, RoundedRectangleIsItsSignedDistanceTurnedAndMoved) {
 
 TEST(BodyShape, AreaAndReach) {
   fsi::BodySpec ball;
-  EXPECT_DOUBLE_EQ(fsi::interface::body_area(ball), std::numbers::pi * 0.16);
-  EXPECT_EQ(fsi::interface::body_reach(ball), 0.4);
+  EXPECT_DOUBLE_EQ(fsi::body_area(ball), std::numbers::pi * 0.16);
+  EXPECT_EQ(fsi::body_reach(ball), 0.4);
   fsi::BodySpec e = ball;
   e.shape = fsi::BodyShape::ellipse;
   e.half_size_m = {0.45, 0.3};
-  EXPECT_DOUBLE_EQ(fsi::interface::body_area(e), std::numbers::pi * 0.45 * 0.3);
-  EXPECT_EQ(fsi::interface::body_reach(e), 0.45);
+  EXPECT_DOUBLE_EQ(fsi::body_area(e), std::numbers::pi * 0.45 * 0.3);
+  EXPECT_EQ(fsi::body_reach(e), 0.45);
   fsi::BodySpec r = ball;
   r.shape = fsi::BodyShape::rounded_rectangle;
   r.half_size_m = {0.4, 0.25};
@@ -115,9 +115,9 @@ TEST(BodyShape, AreaAndReach) {
   int in = 0, all = 0;
   for (double x = -0.5; x < 0.5; x += 0.001)
     for (double y = -0.5; y < 0.5; y += 0.001, ++all) in += fsi::interface::initial_distance(r, {x, y}) < 0.0;
-  EXPECT_NEAR(fsi::interface::body_area(r), 4.0 * 0.4 * 0.25 - (4.0 - std::numbers::pi) * 0.01, 1e-15);
-  EXPECT_NEAR(in * 1e-6, fsi::interface::body_area(r), 2e-3);
-  EXPECT_NEAR(fsi::interface::body_reach(r), std::hypot(0.3, 0.15) + 0.1, 1e-15);
+  EXPECT_NEAR(fsi::body_area(r), 4.0 * 0.4 * 0.25 - (4.0 - std::numbers::pi) * 0.01, 1e-15);
+  EXPECT_NEAR(in * 1e-6, fsi::body_area(r), 2e-3);
+  EXPECT_NEAR(fsi::body_reach(r), std::hypot(0.3, 0.15) + 0.1, 1e-15);
 }
 
 }  // namespace

@@ -75,6 +75,13 @@ struct BodySpec {
   Point2 initial_velocity_mps{0.0, 0.0};  ///< velocity of the whole body at t = 0 [m/s]
 };
 
+/// The body's area at t = 0 [m^2]: pi r^2, pi a b, 4 a b - (4 - pi) r^2 (what the mass
+/// error compares with).
+double body_area(const BodySpec& body);
+
+/// The largest distance [m] from the centre to a point of the body (the ball's radius).
+double body_reach(const BodySpec& body);
+
 struct FluidSpec {
   double density_kgpm3 = 1000.0;   ///< rho_f
   double viscosity_m2ps = 1.0e-3;  ///< kinematic nu_f

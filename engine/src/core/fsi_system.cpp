@@ -200,7 +200,7 @@ void FsiSystem::build_contact_forces() {
   }
   if (solid_area_m2 > 0.0) body_centroid_m /= solid_area_m2;
   const ContactDistance distance(scenario_.walls, cut.interface, body_centroid_m, dist0,
-                                 interface::body_reach(scenario_.body),
+                                 body_reach(scenario_.body),
                                  scenario_.contact.corners_as_walls && solid_area_m2 > 0.0);
   const double g = 0.5 / std::sqrt(3.0);
   for (const fe::InterfaceSegment& seg : cut.interface) {

@@ -74,7 +74,7 @@ Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geo
     f.mean_vx_mps = mvx / area;
     f.mean_vy_mps = mvy / area;
   }
-  const double reference = interface::body_area(scenario.body);  // rho_s^0 cancels
+  const double reference = body_area(scenario.body);  // rho_s^0 cancels
   const RigidFit fit = fit_rigid_motion(cut, solution);
   f.rotation_rad = reference_rotation_rad + fit.angle_rad;
   f.mass_error = std::abs(reference - mass) / reference;

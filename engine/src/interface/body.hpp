@@ -20,12 +20,6 @@ inline double initial_distance(const BodySpec& body, const Vec2& X) {
   return (X - Vec2(body.center_m.x, body.center_m.y)).norm() - body.radius_m;
 }
 
-/// The body's area at t = 0 [m^2] (what the mass error compares with).
-double body_area(const BodySpec& body);
-
-/// The largest distance [m] from the centre to a point of the body (the ball's radius).
-double body_reach(const BodySpec& body);
-
 /// The fluid's velocity [m/s] at x (outside the ball) at t = 0 when the ball starts with
 /// body.initial_velocity_mps = U: the potential flow of a circle moving at U through
 /// fluid at rest far away, v = (R/r)^2 (2 (U.e_r) e_r - U), r = |x - c| (divergence-free,

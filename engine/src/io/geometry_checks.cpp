@@ -240,7 +240,7 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
   const auto boundary_point = [&](double a) {
     const double ca = std::cos(a), sa = std::sin(a);
     if (ball) return Point2{c.x + r * ca, c.y + r * sa};
-    double lo = 0.0, hi = interface::body_reach(body) * (1.0 + 1e-9);
+    double lo = 0.0, hi = body_reach(body) * (1.0 + 1e-9);
     for (int i = 0; i < 60; ++i) {
       const double mid = 0.5 * (lo + hi);
       (interface::initial_distance(body, {c.x + mid * ca, c.y + mid * sa}) < 0.0 ? lo : hi) = mid;
