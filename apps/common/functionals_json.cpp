@@ -23,6 +23,23 @@ nlohmann::ordered_json functionals_json(const Functionals& f) {
   o["mass_error"] = number_json(f.mass_error);
   o["cavitation_rate_m2ps"] = number_json(f.cavitation_rate_m2ps);
   o["rotation_rad"] = number_json(f.rotation_rad);
+  if (!f.bodies.empty()) {  // several bodies: body1, body2, ... in order
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    for (const Functionals::Body& b : f.bodies) {
+      nlohmann::ordered_json j;
+      j["centroid_x_m"] = number_json(b.centroid_x_m);
+      j["centroid_y_m"] = number_json(b.centroid_y_m);
+      j["mean_vx_mps"] = number_json(b.mean_vx_mps);
+      j["mean_vy_mps"] = number_json(b.mean_vy_mps);
+      j["min_distance_m"] = number_json(b.min_distance_m);
+      j["min_body_distance_m"] = number_json(b.min_body_distance_m);
+      j["mass_error"] = number_json(b.mass_error);
+      j["rotation_rad"] = number_json(b.rotation_rad);
+      j["solid_area_m2"] = number_json(b.solid_area_m2);
+      bodies.push_back(std::move(j));
+    }
+    o["bodies"] = std::move(bodies);
+  }
   return o;
 }
 

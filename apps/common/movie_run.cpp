@@ -41,7 +41,7 @@ class MovieRun {
         summary_(scenario),
         earlier_(options.continue_run ? std::optional(read_earlier_run(options.out_dir)) : std::nullopt),
         csv_(options.out_dir / "functionals.csv", /*with_newton_columns=*/true,
-             earlier_ ? earlier_->csv_rows : std::vector<std::string>{}),
+             earlier_ ? earlier_->csv_rows : std::vector<std::string>{}, scene_bodies(scenario).size()),
         pvd_(options.out_dir / "vtk" / "frames.pvd"),
         meter_(0.0, scenario.numerics.end_time_s, options.quiet) {
     if (earlier_) options_.resume_from = earlier_->checkpoint;

@@ -30,6 +30,9 @@ constexpr Rgba outside_domain{238, 238, 238, 255};
 constexpr Rgba mesh_ink{90, 90, 90, 110};
 constexpr Rgba wall_ink{70, 70, 70, 255};
 constexpr Rgba interface_ink{0, 0, 0, 255};
+// The contours of body1, body2, ... (FrameSpec::colour_bodies): dark, saturated colours
+// that stand out on the light middle and the saturated ends of every colour map.
+constexpr Rgba body_inks[] = {{0, 0, 0, 255}, {200, 0, 200, 255}, {0, 140, 0, 255}, {235, 120, 0, 255}};
 constexpr Rgba inset_marker_ink{255, 255, 255, 255};
 // The top text row's baseline sits this many capital heights above the field.
 constexpr float text_row_gap = 0.6f;
@@ -79,7 +82,19 @@ void draw_field(Canvas& c, const FieldView& view, const FrameSpec& spec, Quantit
   }
   if (spec.show_walls) c.segments(segment_points(view.walls, mx, my), 1.6f * s, wall_ink, true);
   if (spec.show_interface) {
-    c.segments(segment_points(view.interface, mx, my), 1.2f * s, interface_ink, true);
+    int bodies = 1;
+    if (spec.colour_bodies && view.interface_body.size() == view.interface.size())
+      for (int b : view.interface_body) bodies = std::max(bodies, b + 1);
+    if (bodies == 1) {
+      c.segments(segment_points(view.interface, mx, my), 1.2f * s, interface_ink, true);
+    } else {
+      for (int b = 0; b < bodies; ++b) {
+        std::vector<Segment2> own;
+        for (std::size_t i = 0; i < view.interface.size(); ++i)
+          if (view.interface_body[i] == b) own.push_back(view.interface[i]);
+        c.segments(segment_points(own, mx, my), 1.2f * s, body_inks[b % std::size(body_inks)], true);
+      }
+    }
   }
 }
 

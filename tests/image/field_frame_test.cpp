@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numbers>
 #include <fsi/colormap.hpp>
 #include <fsi/renderer.hpp>
 #include <fsi/sample_field.hpp>
@@ -75,6 +77,45 @@ TEST_F(FieldFrame, TwoPanelsWithFilmInsetGolden) {
   s.inset = film_window(near_floor);
   ASSERT_TRUE(s.inset);
   testing::expect_matches_golden("field_two_panels_inset", renderer.render(near_floor, s));
+}
+
+/// The sample view with two more bodies' contours (circles of radius 0.15 m), each
+/// interface segment labelled with its body as the engine labels them.
+FieldView three_bodies(const FieldView& one) {
+  FieldView v = one;
+  v.interface_body.assign(v.interface.size(), 0);
+  const double centres[2][2] = {{-0.6, 0.1}, {0.65, -0.1}};
+  for (int b = 0; b < 2; ++b)
+    for (int k = 0; k < 64; ++k) {
+      const double a0 = 2 * std::numbers::pi * k / 64, a1 = 2 * std::numbers::pi * (k + 1) / 64;
+      v.interface.push_back({{centres[b][0] + 0.15 * std::cos(a0), centres[b][1] + 0.15 * std::sin(a0)},
+                             {centres[b][0] + 0.15 * std::cos(a1), centres[b][1] + 0.15 * std::sin(a1)}});
+      v.interface_body.push_back(b + 1);
+    }
+  return v;
+}
+
+TEST_F(FieldFrame, EachBodyInItsOwnColourGolden) {
+  const FieldView v = three_bodies(view);
+  FrameSpec s = small_frame(Quantity::vmag);
+  const Image image = renderer.render(v, s);
+  testing::expect_matches_golden("field_three_bodies", image);
+  // body2's contour is drawn in magenta, body3's in green; all black when asked.
+  const auto has_pixel = [](const Image& im, auto near) {
+    for (int y = 0; y < im.height; ++y)
+      for (int x = 0; x < im.width; ++x) {
+        const std::uint8_t* p = &im.rgba[4 * (static_cast<std::size_t>(y) * im.width + x)];
+        if (near(p[0], p[1], p[2])) return true;
+      }
+    return false;
+  };
+  const auto magenta = [](int r, int g, int b) { return r > 170 && g < 40 && b > 170; };
+  const auto green = [](int r, int g, int b) { return r < 40 && g > 110 && g < 170 && b < 40; };
+  EXPECT_TRUE(has_pixel(image, magenta));
+  EXPECT_TRUE(has_pixel(image, green));
+  s.colour_bodies = false;
+  const Image plain = renderer.render(v, s);
+  EXPECT_FALSE(has_pixel(plain, magenta));
 }
 
 TEST_F(FieldFrame, FilmWindowSpansTheGapUnderTheBody) {

@@ -4,7 +4,8 @@
 #  - tools/study-common.sh's --set/--out: a run directory records its settings, is reused
 #    with the same ones, continued to a later end time and refused with other settings
 #    (a stub stands in for fsi-movie); tools/validate-example1's rows likewise;
-#  - tools/study-shapes' landing, bounce and rotation on a stub run.
+#  - tools/study-shapes' landing, bounce and rotation on a stub run;
+#  - tools/study-bodies' gap, mirror error and force-law prediction on a stub run.
 # Inputs: -DSOURCE_DIR -DBINARY_DIR.
 find_program(AWK NAMES awk mawk gawk REQUIRED)
 find_program(BASH bash REQUIRED)
@@ -268,3 +269,27 @@ if(NOT _out MATCHES "ellipse: lands at t = 1.0000 s \\(gap 0.002 m\\), bounces \
   message(FATAL_ERROR "study-shapes: no verdict of a bounce\n${_out}${_err}")
 endif()
 message("study-shapes: ${_row}")
+
+# tools/study-bodies: two balls of R = 0.25 m (rho_s = rho_f = 1000 kg/m^3, gamma_c = 2000
+# N/m, dist_0 = 0.1 m) enter dist_0 at 0.1988 m/s each, come within 2.6 cm and fly apart.
+# The force law's energy balance (with the added mass) puts the stop at 0.02645 m.
+set(_bodies_stub ${_dir}/fake-fsi-movie-bodies)
+file(WRITE ${_bodies_stub} "#!/usr/bin/env bash
+dir=$2; mkdir -p \"$dir\"
+printf 'step,time_s,mass_error,body1_centroid_x_m,body1_mean_vx_mps,body1_min_distance_m,body1_min_body_distance_m,body1_mass_error,body2_centroid_x_m,body2_mean_vx_mps,body2_min_distance_m,body2_min_body_distance_m,body2_mass_error,converged\\n0,0,0.004,-0.4,0.3,0.35,0.3,0.004,0.4,-0.3,0.35,0.3,0.004,1\\n1,0.5,0.004,-0.3,0.1988,0.45,0.09,0.004,0.3,-0.1988,0.45,0.09,0.004,1\\n2,0.9,0.005,-0.263,0,0.487,0.026,0.005,0.263000001,0,0.487,0.026,0.003,1\\n3,1.5,0.004,-0.35,-0.13,0.4,0.2,0.004,0.35,0.13,0.4,0.2,0.004,1\\n' > \"$dir/functionals.csv\"
+printf '{\\n  \"bodies\": [\\n    {\\n      \"radius_m\": 0.25\\n    }\\n  ],\\n  \"fluid\": {\\n    \"density_kgpm3\": 1000\\n  },\\n  \"solid\": {\\n    \"density_kgpm3\": 1000\\n  },\\n  \"contact\": {\\n    \"gamma_c\": 2000,\\n    \"dist0_m\": 0.1,\\n    \"min_dist_fraction\": 0.1\\n  },\\n  \"numerics\": {\"time_step_s\": 0.002}\\n}\\n' > \"$dir/scenario.json\"
+printf '{\\n  \"final\": true,\\n  \"stop_reason\": \"\",\\n  \"simulated_time_s\": 1.5,\\n  \"contact_sequence\": \"\"\\n}\\n' > \"$dir/summary.json\"
+")
+file(CHMOD ${_bodies_stub} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+execute_process(COMMAND env FSI_STUDY_NO_BUILD=1 FSI_MOVIE=${_bodies_stub}
+    ${BASH} ${SOURCE_DIR}/tools/study-bodies --jobs 1 --end-time 1.5 --only two_balls_collide --out ${_dir}/bodies
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+file(STRINGS ${_dir}/bodies/summary.csv _rows)
+list(GET _rows 1 _row)
+if(NOT _rc EQUAL 0 OR NOT _row STREQUAL "two_balls_collide,1.5000,4,0,0.026,0.35,0.005,1,0,1e-09")
+  message(FATAL_ERROR "study-bodies: exit ${_rc}, summary row '${_row}'\n${_out}${_err}")
+endif()
+if(NOT _out MATCHES "two_balls_collide: enter dist_0 at 0.1988 m/s each, stop 0.026 m apart against 0.02645 m from the force law's energy balance \\(within 20 %\\), fly apart, every step converged, mirror error 1e-09 m: yes")
+  message(FATAL_ERROR "study-bodies: no verdict of a stop at the predicted gap\n${_out}${_err}")
+endif()
+message("study-bodies: ${_row}")

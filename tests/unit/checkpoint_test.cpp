@@ -50,7 +50,7 @@ fsi::State sample_state() {
   s.previous_corner_sign = {};
   s.edge_cut = {-1.0, 0.25, 1.0 / 3.0};
   s.previous_edge_cut = {0.5};
-  s.functionals = {1e-3, -0.6, 0.4, -0.4, 0.4, 0.01, -0.2, -0.3, 0.001, 0.5026, 1e-9};
+  s.functionals = {1e-3, -0.6, 0.4, -0.4, 0.4, 0.01, -0.2, -0.3, 0.001, 0.5026, 1e-9, 0.0, 0.0, {}};
   s.reference_offset_x_m = 1.75;
   s.reference_offset_y_m = -0.5;
   s.reference_rotation_rad = -3.25;
@@ -137,7 +137,8 @@ std::string with_version(std::string bytes, std::uint32_t version) {
 }
 
 /// A checkpoint of `state` (without a factorization origin) in the layout of formats 3
-/// to 5: before 6 without the body's reference (3 f64 before the 11 functionals), before
+/// to 6: before 7 without the count of the bodies' references (a u64 before the 11
+/// functionals), before 6 also without the body's reference (3 f64 before that), before
 /// 5 also without time_step_limit_s (the 8 bytes before the origin flag and the checksum).
 std::string older_layout(fsi::State state, const std::string& fingerprint, std::uint32_t version) {
   state.factorization_origin.reset();
@@ -146,8 +147,10 @@ std::string older_layout(fsi::State state, const std::string& fingerprint, std::
   std::string bytes = fsi::test::read_file(file);
   const std::size_t limit_at = bytes.size() - 8 - 4 - 8;
   if (version < 5) bytes = bytes.substr(0, limit_at) + bytes.substr(limit_at + 8);
-  const std::size_t reference_at = limit_at - 11 * 8 - 3 * 8;
-  bytes = bytes.substr(0, reference_at) + bytes.substr(reference_at + 3 * 8);
+  const std::size_t bodies_at = limit_at - 11 * 8 - 8;  // the count of State::body_references (none)
+  if (version < 7) bytes = bytes.substr(0, bodies_at) + bytes.substr(bodies_at + 8);
+  const std::size_t reference_at = bodies_at - 3 * 8;
+  if (version < 6) bytes = bytes.substr(0, reference_at) + bytes.substr(reference_at + 3 * 8);
   return with_version(bytes, version);
 }
 
@@ -160,6 +163,16 @@ TEST(Checkpoint, Format5LoadsWithTheScenariosOwnReference) {
   EXPECT_EQ(back.reference_rotation_rad, 0.0);
   EXPECT_EQ(back.time_step_limit_s, sample_state().time_step_limit_s);
   EXPECT_TRUE(same_bits(back.previous_solution, sample_state().previous_solution));
+  EXPECT_EQ(back.functionals.mass_error, sample_state().functionals.mass_error);
+}
+
+TEST(Checkpoint, Format6LoadsAsOneBody) {
+  const fs::path file = temp_file("v6.ckpt");
+  write_bytes(file, older_layout(sample_state(), "aaaaaaaaaaaaaaaa", 6));
+  const fsi::State back = fsi::io::read_checkpoint(file, "aaaaaaaaaaaaaaaa");
+  EXPECT_TRUE(back.body_references.empty());
+  EXPECT_EQ(back.reference_rotation_rad, sample_state().reference_rotation_rad);
+  EXPECT_EQ(back.reference_offset_x_m, sample_state().reference_offset_x_m);
   EXPECT_EQ(back.functionals.mass_error, sample_state().functionals.mass_error);
 }
 

@@ -230,9 +230,6 @@ TEST(ScenarioJson, RejectsValuesOutOfRange) {
                      {"[0.001, 0.064] s", "got number 0.2"});
   expect_parse_error(R"({"numerics": {"time_step_max_s": 8e-3, "time_step_max_doublings": 2}})",
                      "/numerics/time_step_max_s", {"replaced by time_step_max_doublings"});
-  expect_parse_error(R"({"numerics": {"time_step_wall_zone_m": 5e-3},
-                         "contact": {"gamma_c": 800, "dist0_m": 1e-2}})",
-                     "/numerics/time_step_wall_zone_m", {"at least contact.dist0_m = 0.01 m", "got 0.005"});
   expect_parse_error(R"({"numerics": {"time_step_wall_zone_m": -1}})", "/numerics/time_step_wall_zone_m",
                      {"[0, 1000] m", "got -1"});
   expect_parse_error(R"({"numerics": {"time_step_max_doublings": 7}})", "/numerics/time_step_max_doublings",

@@ -50,7 +50,7 @@ TEST(StepMapping, SolvesTheInitialPointSetEquationForLinearDeformations) {
   mo.k_s = 0.01;
   std::vector<fsi::forms::OldValues> old;
   const auto stats = fsi::interface::compute_old_values(mesh, buckets, next, quad, {&cur, &s_cur},
-                                                        {&prev, &s_prev}, s.body, s.walls, mo, old);
+                                                        {&prev, &s_prev}, fsi::scene_bodies(s), s.walls, mo, old);
   EXPECT_GT(stats.ips_points, 100);
   EXPECT_EQ(stats.ips_failures, 0);
   const Eigen::Matrix2d map = (Eigen::Matrix2d::Identity() - b).inverse() * (Eigen::Matrix2d::Identity() - a);

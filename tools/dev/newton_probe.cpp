@@ -112,7 +112,7 @@ int run(const Options& o) {
   mo.identity_gap_m = n.identity_gap_m;
   std::vector<forms::OldValues> old;
   interface::compute_old_values(mesh, buckets, next, quad, {&current, &state.solution},
-                                {&previous, &state.previous_solution}, scenario.body, scenario.walls, mo, old);
+                                {&previous, &state.previous_solution}, scene_bodies(scenario), scenario.walls, mo, old);
   system.set_old_values(std::move(old));
 
   core::InitialGuessStats guess;

@@ -16,6 +16,7 @@
 #include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -216,6 +217,16 @@ class DocWriter {
   bool describe(Row& row, const T& member, const fsi::io::Fields&) {
     walk(member, row.path, {});
     return false;
+  }
+  /// An object that may be left out: a row here, and a section for its keys (their
+  /// defaults those of T{}, when it is given).
+  template <class T>
+  bool describe(Row& row, const std::optional<T>&, const fsi::io::Fields&) {
+    row.type = "object (optional)";
+    row.range = "see `" + row.path + "`";
+    row.deflt = "absent";
+    walk(T{}, row.path, {});
+    return true;
   }
   /// An array of objects: a row here, and a section for its items, whose keys default to
   /// those of an item that leaves them out (T{}) unless the item must give them.

@@ -104,7 +104,9 @@ class Engine {
   /// levels is measured from the initial ball moved and turned with the body (its
   /// least-squares rigid motion), State::reference_* record that. The interface, stresses
   /// and velocities stay as they are (core/rereference.hpp). Returns the angle taken out
-  /// [rad] (0 when there is no solid node to fit).
+  /// [rad] (0 when there is no solid node to fit). With several bodies (which the engine
+  /// re-references after every step anyway) each body is, State::body_references records
+  /// it, and the angle is body1's.
   double rereference();
   /// Change a numerical parameter between steps (time step, Newton budget, ...).
   /// scenario() reports the new numerics, and checkpoints saved afterwards carry them.

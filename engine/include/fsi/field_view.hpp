@@ -35,6 +35,9 @@ struct FieldView {
   std::vector<Point2> nodes;                   ///< node positions [m], one per node
   std::vector<std::array<int, 3>> triangles;   ///< node indices, counter-clockwise
   std::vector<Phase> triangle_phase;           ///< one per triangle
+  /// One per triangle: the body (0 = body1, 1 = body2, ...) of a solid one, -1 for fluid
+  /// (empty: not known; then every solid triangle is body1's).
+  std::vector<int> triangle_body;
   /// Patch outlines and sub-element edges for a mesh overlay: pairs of node indices.
   std::vector<std::array<int, 2>> mesh_edges;
 
@@ -47,6 +50,8 @@ struct FieldView {
 
   /// The discrete interface: a set of segments (the polyline pieces of each cut patch).
   std::vector<Segment2> interface;
+  /// One per interface segment: the body it bounds (0 = body1; empty: body1 everywhere).
+  std::vector<int> interface_body;
   /// The no-slip walls of the domain.
   std::vector<Segment2> walls;
 

@@ -84,12 +84,15 @@ void write_vtk_frame(const std::filesystem::path& folder, const std::string& ste
 // The time series of the chapter's functionals as CSV, one row per time level:
 //   step,time_s,min_distance_m,bottom_y_m,top_y_m,left_x_m,right_x_m,centroid_x_m,
 //   centroid_y_m,mean_vx_mps,mean_vy_mps,solid_area_m2,mass_error,cavitation_rate_m2ps
+// ,rotation_rad, in a scene with several bodies each body's columns body<n>_centroid_x_m,
+// body<n>_centroid_y_m, body<n>_mean_vx_mps, body<n>_mean_vy_mps, body<n>_min_distance_m,
+// body<n>_min_body_distance_m, body<n>_mass_error, body<n>_rotation_rad (n = 1, 2, ...),
 // plus, optionally, the step's solver report: newton_iterations,converged (0/1).
 // Doubles are written in shortest round-trip form (full precision, reads back exactly);
 // every row is flushed, so the file is usable while the run goes on or after it stops.
 
-/// The header line (without newline).
-std::string functionals_csv_header(bool with_newton_columns);
+/// The header line (without newline); `bodies` > 1 adds each body's columns.
+std::string functionals_csv_header(bool with_newton_columns, std::size_t bodies = 1);
 /// True for the header line, or for that of files written before cavitation_rate_m2ps
 /// existed (their rows read back with the rate 0).
 bool is_functionals_csv_header(const std::string& line, bool with_newton_columns);
@@ -118,11 +121,11 @@ class FunctionalsCsv {
   /// Creates (or truncates) `file` and writes the header. `with_newton_columns` adds
   /// newton_iterations and converged; rows must then come with a StepReport.
   /// Throws InputError if the file cannot be opened.
-  FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns);
+  FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns, std::size_t bodies = 1);
   /// The same, then `first_rows` (rows of an earlier run that this one continues,
   /// written as they are).
   FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns,
-                 const std::vector<std::string>& first_rows);
+                 const std::vector<std::string>& first_rows, std::size_t bodies = 1);
 
   /// Appends the functionals of `state` (its step and time). Only without newton columns.
   void append(const State& state);

@@ -9,6 +9,8 @@
 /// after that relies on it. Units are SI and carried in the member names.
 #include <array>
 #include <filesystem>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,13 @@ struct MeshSpec {
   int refinements = 0;            ///< global refinements (each patch -> 2x2), 0..4
 };
 
+/// St. Venant-Kirchhoff solid (12.2).
+struct SolidSpec {
+  double density_kgpm3 = 1000.0;  ///< reference density rho_s^0
+  double mu_pa = 2.0e5;           ///< shear modulus mu_s [Pa]
+  double lambda_pa = 8.0e5;       ///< first Lame parameter lambda_s [Pa]
+};
+
 /// The body's shape at t = 0, given by its signed distance d0 (negative inside).
 enum class BodyShape {
   circle,            ///< d0 = |x - c| - radius_m (the chapter's ball)
@@ -73,6 +82,8 @@ struct BodySpec {
   Point2 half_size_m{0.4, 0.4};
   double angle_rad = 0.0;                 ///< counter-clockwise turn of the body's own x axis at t = 0
   Point2 initial_velocity_mps{0.0, 0.0};  ///< velocity of the whole body at t = 0 [m/s]
+  /// The body's own material (ours); none: the scenario's `solid`.
+  std::optional<SolidSpec> solid;
 };
 
 /// The body's area at t = 0 [m^2]: pi r^2, pi a b, 4 a b - (4 - pi) r^2 (what the mass
@@ -87,12 +98,6 @@ struct FluidSpec {
   double viscosity_m2ps = 1.0e-3;  ///< kinematic nu_f
 };
 
-/// St. Venant-Kirchhoff solid (12.2).
-struct SolidSpec {
-  double density_kgpm3 = 1000.0;  ///< reference density rho_s^0
-  double mu_pa = 2.0e5;           ///< shear modulus mu_s [Pa]
-  double lambda_pa = 8.0e5;       ///< first Lame parameter lambda_s [Pa]
-};
 
 /// What to do with a step whose Newton iteration did not converge within the budget.
 /// Whatever the policy, an attempt in which Newton never moved its iterate (no line
@@ -132,8 +137,10 @@ struct NumericsSpec {
   /// control: which length the next step has does not change what a state is. Relative to
   /// k, so a scenario with a finer k keeps the same ratio.
   int time_step_max_doublings = 3;
-  /// The wall zone [m] (advanced): a body whose interface is closer than this to a wall takes steps
-  /// of time_step_s (with time_step_max_doublings > 0 at least contact.dist0_m).
+  /// The wall zone [m] (advanced): a body whose interface is closer than this to a wall (or,
+  /// with several bodies, to another body) takes steps of time_step_s. With the contact force
+  /// on, the zone is at least contact.dist0_m: longer steps inside the force's reach could
+  /// carry a body deep into it in one step (the force is explicit in a step).
   double time_step_wall_zone_m = 0.03;
   /// ... (advanced) and while its speed times the step stays within this fraction of the shortest side
   /// of the patches its interface cuts (k itself moves it by up to 1/8 of the stairs' 4 mm
@@ -218,7 +225,9 @@ struct NumericsSpec {
   /// rolled carries u = (I - Q) x + ..., whose extension must bend to zero normal
   /// derivative at every wall within the gap: near a wall the IPS level set and Newton's
   /// start for newly covered nodes go wrong (core/rereference.hpp). Part of the
-  /// discretization (the extension, hence the cut, changes), so in the fingerprint.
+  /// discretization (the extension, hence the cut, changes), so in the fingerprint. A scene
+  /// of several bodies re-references every body after every step whatever this says
+  /// (docs/method.md, "Several bodies").
   double rereference_angle_rad = 0.05;
 
   double cip_gamma = 0.05;        ///< gamma of S_aniso (advanced; scaled by 1/(rho_f nu_f))
@@ -321,9 +330,13 @@ struct Scenario {
   /// No-slip walls. A domain boundary edge lying on a wall gets v = 0; every other
   /// boundary edge is open (do-nothing). Walls also drive contact and distances.
   std::vector<Segment2> walls;
+  /// The body of a scene with one body (the chapter's). Ignored when `bodies` is not empty.
   BodySpec body;
+  /// Several bodies (ours; at most 8), named body1, body2, ... in this order in the
+  /// functionals and reports. Empty: the one `body`. Bodies must not overlap at t = 0.
+  std::vector<BodySpec> bodies;
   FluidSpec fluid;
-  SolidSpec solid;
+  SolidSpec solid;  ///< the material of every body that does not give its own
   Point2 gravity_mps2{0.0, -0.5};  ///< acts on the solid only (docs/method.md, "Gravity")
   /// Gravity on the density difference: the solid feels (rho_s - rho_f) g, the fluid none
   /// (its weight is in the reduced pressure), so a body lighter than the fluid rises and
@@ -334,6 +347,12 @@ struct Scenario {
   ContactSpec contact;
   OutputSpec output;
 };
+
+/// The scene's bodies: `bodies`, or the one `body` when that list is empty.
+std::span<const BodySpec> scene_bodies(const Scenario& scenario);
+
+/// The material of `body` in `scenario`: its own, or the scenario's `solid`.
+const SolidSpec& body_solid(const Scenario& scenario, const BodySpec& body);
 
 /// The chapter's Example 1 (falling ball) on the coarse 4225-node mesh, k = 2e-3 s, with
 /// the numerics of `method` (the default: fsi; Method::chapter: the chapter's Example 1

@@ -35,6 +35,22 @@ struct Functionals {
   /// least-squares rigid motion of its solid nodes' initial points onto their positions
   /// (core/rereference.hpp), plus the turns re-referencing took out of u.
   double rotation_rad = 0.0;
+
+  /// One body's share (scenes with several bodies, ours).
+  struct Body {
+    double centroid_x_m = 0.0, centroid_y_m = 0.0;  ///< of the body's discrete solid
+    double mean_vx_mps = 0.0, mean_vy_mps = 0.0;    ///< solid-averaged velocity
+    double min_distance_m = 0.0;       ///< min over its interface of dist to the walls
+    double min_body_distance_m = 0.0;  ///< min over its interface of the distance to the other bodies' interfaces
+    double mass_error = 0.0;           ///< j_mass of this body alone
+    double rotation_rad = 0.0;         ///< its turn since t = 0 (counter-clockwise)
+    double solid_area_m2 = 0.0;
+  };
+  /// Per body in scene order (body1, body2, ...); empty in a scene with one body. With
+  /// several, the fields above are the scene's: min_distance_m the smallest of the
+  /// bodies', mass_error the largest, centroid and velocity those of all the solid, and
+  /// rotation_rad body1's.
+  std::vector<Body> bodies;
 };
 
 struct FactorizationOrigin;
@@ -69,6 +85,14 @@ struct State {
   /// motion, and its harmonic extension into the fluid stays small (core/rereference.hpp).
   double reference_offset_x_m = 0.0, reference_offset_y_m = 0.0;
   double reference_rotation_rad = 0.0;
+  /// The same for each body of a scene with several (ours; empty with one body, whose
+  /// reference is the three numbers above). Such a scene re-references every body after
+  /// every step: u holds one step's motion and the elastic part, so that its extension
+  /// through the fluid between two bodies that move apart or together stays small.
+  struct BodyReference {
+    double offset_x_m = 0.0, offset_y_m = 0.0, rotation_rad = 0.0;
+  };
+  std::vector<BodyReference> body_references;
 
   Functionals functionals;
 

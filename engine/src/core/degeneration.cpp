@@ -27,8 +27,19 @@ std::optional<Degeneration> detect_degeneration(const Functionals& before, const
                   before.mass_error, after.mass_error, kMassErrorJump);
     return Degeneration{text, centroid};
   }
-  const double speed = std::max(std::hypot(before.mean_vx_mps, before.mean_vy_mps),
-                                std::hypot(after.mean_vx_mps, after.mean_vy_mps));
+  double speed = std::max(std::hypot(before.mean_vx_mps, before.mean_vy_mps),
+                          std::hypot(after.mean_vx_mps, after.mean_vy_mps));
+  // Several bodies: each body's own mass error and speed (the scene's mean velocity is
+  // near zero for two bodies that fly apart).
+  for (std::size_t i = 0; i < after.bodies.size() && i < before.bodies.size(); ++i) {
+    const Functionals::Body &b0 = before.bodies[i], &b1 = after.bodies[i];
+    if (std::abs(b1.mass_error - b0.mass_error) > kMassErrorJump) {
+      std::snprintf(text, sizeof text, "the mass error of body%zu jumped from %.3g to %.3g in one step (more than %.2g)",
+                    i + 1, b0.mass_error, b1.mass_error, kMassErrorJump);
+      return Degeneration{text, {b1.centroid_x_m, b1.centroid_y_m}};
+    }
+    speed = std::max({speed, std::hypot(b0.mean_vx_mps, b0.mean_vy_mps), std::hypot(b1.mean_vx_mps, b1.mean_vy_mps)});
+  }
   const double allowed = 2.0 * speed * time_step_s + kInterfaceJumpPatchSides * patch_side_m;
   const double moved = std::max({std::abs(after.bottom_y_m - before.bottom_y_m), std::abs(after.top_y_m - before.top_y_m),
                                  std::abs(after.left_x_m - before.left_x_m), std::abs(after.right_x_m - before.right_x_m)});
@@ -37,6 +48,28 @@ std::optional<Degeneration> detect_degeneration(const Functionals& before, const
                   "the interface jumped by %.3g m in one step (the body's speed and the mesh allow %.3g m)", moved,
                   allowed);
     return Degeneration{text, centroid};
+  }
+  return std::nullopt;
+}
+
+std::optional<Degeneration> merged_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body) {
+  if (element_body.size() != cut.elements.size()) return std::nullopt;
+  std::vector<int> node_body(cut.x.size(), -1);
+  for (std::size_t k = 0; k < cut.elements.size(); ++k) {
+    const int b = element_body[k];
+    if (b < 0) continue;
+    const fe::SubElement& e = cut.elements[k];
+    for (int a = 0; a < e.vertices; ++a) {
+      int& nb = node_body[e.node[a]];
+      if (nb >= 0 && nb != b) {
+        char text[200];
+        std::snprintf(text, sizeof text, "body%d and body%d touch: their solids share a mesh node (real contact between bodies)",
+                      std::min(nb, b) + 1, std::max(nb, b) + 1);
+        const mesh::Vec2& x = cut.x[e.node[a]];
+        return Degeneration{text, {x.x(), x.y()}};
+      }
+      nb = b;
+    }
   }
   return std::nullopt;
 }

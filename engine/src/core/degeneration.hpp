@@ -9,6 +9,7 @@
 /// failure policy often does.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "fe/cut_mesh.hpp"
 #include "fsi/state.hpp"
@@ -42,6 +43,12 @@ struct Degeneration {
 std::optional<Degeneration> detect_degeneration(const Functionals& before, const Functionals& after,
                                                 double time_step_s, double patch_side_m, int inverted_points,
                                                 Point2 inverted_where_m);
+
+/// Several bodies: whether two of them touch in `cut` (element_body its sub-elements'
+/// bodies, interface::element_bodies): a node shared by the solids of two bodies. The
+/// level set of the scene cannot keep two touching bodies apart (one solid region), so
+/// such a state is not kept; the message names both bodies.
+std::optional<Degeneration> merged_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body);
 
 /// The largest side h_P of the patches the interface cuts (or passes through a corner of)
 /// in `before` or `after`; 0 without an interface.

@@ -56,6 +56,8 @@ struct Engine::Impl {
   // Meshes of level m (the current solution's), m-1, and m+1 (built from u^m: the
   // geometry of the next step, and where the body is now).
   fe::CutMesh cut_cur, cut_prev, cut_next;
+  /// The body of each sub-element of cut_cur and cut_next (interface::element_bodies).
+  std::vector<int> body_cur, body_next;
   fe::CutData data_next;
   fe::QuadratureTable quad_cur;
 
@@ -63,14 +65,24 @@ struct Engine::Impl {
     return fe::CutOptions{scenario.numerics.cut_snap, scenario.numerics.cut_snap_distance_m};
   }
 
-  /// The initial ball as the state `s` refers its displacement to (core/rereference.hpp).
-  BodySpec reference_body(const State& s) const {
-    BodySpec body = scenario.body;
+  /// The initial bodies as the state `s` refers its displacement to (core/rereference.hpp).
+  std::vector<BodySpec> reference_bodies(const State& s) const {
+    const std::span<const BodySpec> scene = scene_bodies(scenario);
+    std::vector<BodySpec> bodies(scene.begin(), scene.end());
+    if (bodies.size() > 1) {
+      for (std::size_t b = 0; b < bodies.size() && b < s.body_references.size(); ++b) {
+        bodies[b].center_m.x += s.body_references[b].offset_x_m;
+        bodies[b].center_m.y += s.body_references[b].offset_y_m;
+        bodies[b].angle_rad += s.body_references[b].rotation_rad;
+      }
+      return bodies;
+    }
+    BodySpec& body = bodies[0];
     body.center_m.x += s.reference_offset_x_m;
     body.center_m.y += s.reference_offset_y_m;
     // A shape turned with the body (the ball's d0 does not see it).
     body.angle_rad += s.reference_rotation_rad;
-    return body;
+    return bodies;
   }
 
   /// Takes the body's rigid motion out of u when its rotation exceeds
@@ -78,7 +90,7 @@ struct Engine::Impl {
   /// True if it did.
   bool rereference_if_turned() {
     const double limit = scenario.numerics.rereference_angle_rad;
-    if (!(limit > 0.0)) return false;
+    if (!(limit > 0.0) || scene_bodies(scenario).size() > 1) return false;
     const core::RigidFit fit = core::fit_rigid_motion(cut_cur, state.solution);
     if (fit.nodes == 0 || std::abs(fit.angle_rad) < limit) return false;
     rereference(fit);
@@ -88,17 +100,55 @@ struct Engine::Impl {
   void rereference(const core::RigidFit& fit) {
     core::rereference_displacement(cut_cur, fit, state.solution);
     core::rereference_displacement(cut_prev, fit, state.previous_solution);
-    const BodySpec body = reference_body(state);
+    const BodySpec body = reference_bodies(state)[0];
     const mesh::Vec2 centre = core::rereferenced_point(fit, {body.center_m.x, body.center_m.y});
-    state.reference_offset_x_m = centre.x() - scenario.body.center_m.x;
-    state.reference_offset_y_m = centre.y() - scenario.body.center_m.y;
+    state.reference_offset_x_m = centre.x() - scene_bodies(scenario)[0].center_m.x;
+    state.reference_offset_y_m = centre.y() - scene_bodies(scenario)[0].center_m.y;
     state.reference_rotation_rad += fit.angle_rad;
+  }
+
+  /// Several bodies: takes each body's rigid motion out of u after every step, at the
+  /// nodes whose initial point is nearest to that body (both levels, the same map per
+  /// body; State::body_references). True if there are several bodies.
+  bool rereference_bodies() {
+    const std::span<const BodySpec> scene = scene_bodies(scenario);
+    if (scene.size() < 2) return false;
+    const std::vector<BodySpec> bodies = reference_bodies(state);
+    const auto regions = [&](const fe::CutMesh& cut, const Eigen::VectorXd& s) {
+      std::vector<int> region(cut.x.size());
+      for (std::size_t i = 0; i < cut.x.size(); ++i) {
+        const mesh::Vec2 u(s[kFieldsPerNode * i + kUx], s[kFieldsPerNode * i + kUy]);
+        region[i] = interface::nearest_body(bodies, cut.x[i] - u, -1);  // a tie: left as it is
+      }
+      return region;
+    };
+    const std::vector<int> cur_region = regions(cut_cur, state.solution);
+    const std::vector<int> prev_region = regions(cut_prev, state.previous_solution);
+    state.body_references.resize(scene.size());
+    for (std::size_t b = 0; b < scene.size(); ++b) {
+      const int body = static_cast<int>(b);
+      const std::vector<char> nodes = core::body_nodes(cut_cur, body_cur, body);
+      const core::RigidFit fit = core::fit_rigid_motion(cut_cur, state.solution, &nodes);
+      if (fit.nodes == 0) continue;
+      std::vector<char> cur_nodes(cur_region.size()), prev_nodes(prev_region.size());
+      for (std::size_t i = 0; i < cur_region.size(); ++i) cur_nodes[i] = cur_region[i] == body;
+      for (std::size_t i = 0; i < prev_region.size(); ++i) prev_nodes[i] = prev_region[i] == body;
+      core::rereference_displacement(cut_cur, fit, state.solution, &cur_nodes);
+      core::rereference_displacement(cut_prev, fit, state.previous_solution, &prev_nodes);
+      const mesh::Vec2 centre = core::rereferenced_point(fit, {bodies[b].center_m.x, bodies[b].center_m.y});
+      State::BodyReference& ref = state.body_references[b];
+      ref.offset_x_m = centre.x() - scene[b].center_m.x;
+      ref.offset_y_m = centre.y() - scene[b].center_m.y;
+      ref.rotation_rad += fit.angle_rad;
+    }
+    return true;
   }
 
   void initialize() {
     const int n = mesh.num_nodes();
-    const fe::CutData data0 = fe::cut_data(mesh, [this](const mesh::Vec2& x) {
-      return interface::initial_distance(scenario.body, x);
+    const std::span<const BodySpec> bodies = scene_bodies(scenario);
+    const fe::CutData data0 = fe::cut_data(mesh, [bodies](const mesh::Vec2& x) {
+      return interface::scene_distance(bodies, x);
     }, cut_options());
     cut_cur = fe::build_cut_mesh(mesh, data0);
     cut_prev = cut_cur;
@@ -109,9 +159,9 @@ struct Engine::Impl {
     // The solid moves at its initial velocity, the fluid with it as potential flow
     // (interface::initial_fluid_velocity); the walls hold their nodes at rest below.
     for (int i = 0; i < n; ++i) {
-      const mesh::Vec2 v = cut_cur.touches_solid[i]
-                               ? mesh::Vec2(scenario.body.initial_velocity_mps.x, scenario.body.initial_velocity_mps.y)
-                               : interface::initial_fluid_velocity(scenario.body, cut_cur.x[i]);
+      const Point2 v_solid = bodies[interface::nearest_body(bodies, cut_cur.x[i])].initial_velocity_mps;
+      const mesh::Vec2 v = cut_cur.touches_solid[i] ? mesh::Vec2(v_solid.x, v_solid.y)
+                                                    : interface::initial_fluid_velocity(bodies, cut_cur.x[i]);
       state.solution[kFieldsPerNode * i + kVx] = v.x();
       state.solution[kFieldsPerNode * i + kVy] = v.y();
     }
@@ -120,6 +170,7 @@ struct Engine::Impl {
     state.previous_solution = state.solution;
     state.corner_sign = state.previous_corner_sign = data0.corner_sign;
     state.edge_cut = state.previous_edge_cut = data0.edge_cut;
+    body_cur = interface::element_bodies(bodies, cut_cur, cut_cur, buckets, state.solution);  // u = 0
     after_state_change();
   }
 
@@ -128,6 +179,7 @@ struct Engine::Impl {
   void rebuild_from_state() {
     cut_cur = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut});
     cut_prev = fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut});
+    body_cur = interface::element_bodies(reference_bodies(state), cut_cur, cut_prev, buckets, state.previous_solution);
     after_state_change();
   }
 
@@ -148,15 +200,19 @@ struct Engine::Impl {
     const State& s0 = origin->step_start;
     const fe::CutMesh cur = fe::build_cut_mesh(mesh, fe::CutData{s0.corner_sign, s0.edge_cut});
     const fe::CutMesh prev = fe::build_cut_mesh(mesh, fe::CutData{s0.previous_corner_sign, s0.previous_edge_cut});
-    const BodySpec body = reference_body(s0);
+    const std::vector<BodySpec> bodies = reference_bodies(s0);
     const fe::CutMesh next = fe::build_cut_mesh(
-        mesh, fe::cut_data(mesh, interface::ips_level_set(body, cur, buckets, s0.solution), cut_options()));
+        mesh, fe::cut_data(mesh, interface::ips_level_set(bodies, cur, buckets, s0.solution), cut_options()));
     const fe::QuadratureTable quad = fe::build_quadrature(next);
+    const std::vector<int> next_body = interface::element_bodies(bodies, next, cur, buckets, s0.solution);
+    system.set_element_bodies(next_body);
     system.set_geometry(next, quad, origin->time_step_s);
     set_step_rules(s0);
     std::vector<forms::OldValues> old;
+    interface::MappingOptions mo = mapping_options(origin->time_step_s);
+    mo.element_body = &next_body;
     interface::compute_old_values(mesh, buckets, next, quad, {&cur, &s0.solution}, {&prev, &s0.previous_solution},
-                                  body, scenario.walls, mapping_options(origin->time_step_s), old);
+                                  bodies, scenario.walls, mo, old);
     system.set_old_values(std::move(old));
     release_wall_nodes(s0, cur, next);
     newton.factorize_at(system, origin->iterate);
@@ -181,11 +237,18 @@ struct Engine::Impl {
 
   void after_state_change() {
     quad_cur = fe::build_quadrature(cut_cur);
-    const BodySpec body = reference_body(state);
-    data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
+    next_geometry();
+  }
+
+  /// cut_next, its bodies and the functionals of the state, from cut_cur and u^m.
+  void next_geometry() {
+    const std::vector<BodySpec> bodies = reference_bodies(state);
+    data_next = fe::cut_data(mesh, interface::ips_level_set(bodies, cut_cur, buckets, state.solution), cut_options());
     cut_next = fe::build_cut_mesh(mesh, data_next);
+    body_next = interface::element_bodies(bodies, cut_next, cut_cur, buckets, state.solution);
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution,
-                                                    state.reference_rotation_rad);
+                                                    state.reference_rotation_rad, body_next, body_cur,
+                                                    state.body_references);
   }
 
   /// The FE function `coeffs` of `cut` (another mesh's) at every node position `x` of
@@ -215,9 +278,9 @@ struct Engine::Impl {
   /// by the interface's motion in one step. Both solutions are interpolated at this mesh's
   /// node positions (moved nodes included); where the meshes share nodes nothing changes.
   void remesh_from(const Impl& src) {
-    const BodySpec src_body = src.reference_body(src.state);
+    const std::vector<BodySpec> src_bodies = src.reference_bodies(src.state);
     const fe::CutData data = fe::cut_data(
-        mesh, interface::ips_level_set(src_body, src.cut_prev, src.buckets, src.state.previous_solution),
+        mesh, interface::ips_level_set(src_bodies, src.cut_prev, src.buckets, src.state.previous_solution),
         cut_options());
     const fe::CutMesh cut = fe::build_cut_mesh(mesh, data);
     State s;
@@ -228,6 +291,7 @@ struct Engine::Impl {
     s.reference_offset_x_m = src.state.reference_offset_x_m;
     s.reference_offset_y_m = src.state.reference_offset_y_m;
     s.reference_rotation_rad = src.state.reference_rotation_rad;
+    s.body_references = src.state.body_references;
     s.solution = sample(src.cut_cur, src.buckets, src.state.solution, cut.x);
     s.previous_solution = sample(src.cut_prev, src.buckets, src.state.previous_solution, cut.x);
     for (int i = 0; i < mesh.num_nodes(); ++i)
@@ -289,24 +353,27 @@ struct Engine::Impl {
 
   /// Whether the body has an initial velocity (its first step is an impulsive start).
   bool starts_moving() const {
-    return scenario.body.initial_velocity_mps.x != 0.0 || scenario.body.initial_velocity_mps.y != 0.0;
+    for (const BodySpec& body : scene_bodies(scenario))
+      if (body.initial_velocity_mps.x != 0.0 || body.initial_velocity_mps.y != 0.0) return true;
+    return false;
   }
 
   /// One attempt at a step of size k on the geometry cut_next. Does not touch the state.
   solve::NewtonResult attempt(double k, const fe::QuadratureTable& quad, Eigen::VectorXd& x,
                               StepReport& report, bool contact_turned = false) {
     auto t0 = std::chrono::steady_clock::now();
+    system.set_element_bodies(body_next);
     system.set_geometry(cut_next, quad, k);
     set_step_rules(state);
     report.geometry_seconds += seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();
-    const interface::MappingOptions mo = mapping_options(k);
+    interface::MappingOptions mo = mapping_options(k);
+    mo.element_body = &body_next;
     std::vector<forms::OldValues> old;
-    const BodySpec body = reference_body(state);
     const interface::MappingStats ms = interface::compute_old_values(
         mesh, buckets, cut_next, quad, {&cut_cur, &state.solution}, {&cut_prev, &state.previous_solution},
-        body, scenario.walls, mo, old);
+        reference_bodies(state), scenario.walls, mo, old);
     system.set_old_values(std::move(old));
     report.mapping_seconds += seconds_since(t0);
     last_attempt_in_contact = release_wall_nodes(state, cut_cur, cut_next, contact_turned);
@@ -359,20 +426,24 @@ struct Engine::Impl {
   struct Outcome {
     fe::CutData data_next;
     fe::CutMesh cut_next;
+    std::vector<int> body_next;  ///< the bodies of cut_next's sub-elements
     Functionals functionals;
   };
   Outcome outcome_of(const Eigen::VectorXd& x, const fe::QuadratureTable& quad) const {
     Outcome o;
-    const BodySpec body = reference_body(state);
-    o.data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_next, buckets, x), cut_options());
+    const std::vector<BodySpec> bodies = reference_bodies(state);
+    o.data_next = fe::cut_data(mesh, interface::ips_level_set(bodies, cut_next, buckets, x), cut_options());
     o.cut_next = fe::build_cut_mesh(mesh, o.data_next);
-    o.functionals = core::compute_functionals(scenario, o.cut_next, cut_next, quad, x, state.reference_rotation_rad);
+    o.body_next = interface::element_bodies(bodies, o.cut_next, cut_next, buckets, x);
+    o.functionals = core::compute_functionals(scenario, o.cut_next, cut_next, quad, x, state.reference_rotation_rad,
+                                              o.body_next, body_next, state.body_references);
     return o;
   }
 
   /// Whether x of a step of length k broke the body (core/degeneration.hpp).
   std::optional<core::Degeneration> degeneration(const Eigen::VectorXd& x, double k, const fe::QuadratureTable& quad,
                                                  const Outcome& o) const {
+    if (std::optional<core::Degeneration> merged = core::merged_bodies(o.cut_next, o.body_next)) return merged;
     const core::SolidDeterminant det = core::solid_determinant(cut_next, quad, x);
     return core::detect_degeneration(state.functionals, o.functionals, k,
                                      core::largest_cut_patch_side(mesh, cut_next, o.cut_next), det.non_positive,
@@ -392,16 +463,14 @@ struct Engine::Impl {
     cut_prev = std::move(cut_cur);
     cut_cur = std::move(cut_next);
     quad_cur = std::move(quad_next);  // the step's quadrature becomes the current one: no copy
+    body_cur = std::move(body_next);
     const auto t0 = std::chrono::steady_clock::now();
-    if (rereference_if_turned()) {  // the same interface up to rounding, in the new reference
-      const BodySpec body = reference_body(state);
-      data_next = fe::cut_data(mesh, interface::ips_level_set(body, cut_cur, buckets, state.solution), cut_options());
-      cut_next = fe::build_cut_mesh(mesh, data_next);
-      state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution,
-                                                    state.reference_rotation_rad);
+    if (rereference_bodies() || rereference_if_turned()) {  // the same interface up to rounding, in the new reference
+      next_geometry();
     } else {
       data_next = std::move(outcome.data_next);
       cut_next = std::move(outcome.cut_next);
+      body_next = std::move(outcome.body_next);
       state.functionals = outcome.functionals;
     }
     report.geometry_seconds += seconds_since(t0);
@@ -417,6 +486,15 @@ struct Engine::Impl {
         if (cut_next.corner_sign[n] <= 0) return {n, e.wall};
     }
     return {-1, -1};
+  }
+
+  /// ", body1 and body2 push each other apart (gap ... m)" when the penalty acts between
+  /// two bodies this step; empty otherwise.
+  std::string bodies_in_contact() const {
+    const std::array<int, 2> b = system.closest_bodies();
+    if (b[0] < 0 || b[1] < 0 || !(system.min_body_gap() < scenario.contact.dist0_m)) return "";
+    return ", body" + std::to_string(std::min(b[0], b[1]) + 1) + " and body" + std::to_string(std::max(b[0], b[1]) + 1) +
+           " push each other apart (gap " + std::to_string(system.min_body_gap()) + " m)";
   }
 
   void report_contact(StepReport& report) const {
@@ -474,12 +552,31 @@ struct Engine::Impl {
     bool contact_turned = false;
   };
 
+  /// The body of each node of `cut` (-1: in no solid sub-element) from its sub-elements'
+  /// bodies; empty with one body.
+  std::vector<int> node_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body) const {
+    if (scene_bodies(scenario).size() < 2 || element_body.size() != cut.elements.size()) return {};
+    std::vector<int> node_body(cut.x.size(), -1);
+    for (std::size_t k = 0; k < cut.elements.size(); ++k)
+      if (element_body[k] >= 0)
+        for (int a = 0; a < cut.elements[k].vertices; ++a) node_body[cut.elements[k].node[a]] = element_body[k];
+    return node_body;
+  }
+
+  /// The numerics the step length is chosen with: the wall zone at least the contact
+  /// force's reach (NumericsSpec::time_step_wall_zone_m).
+  NumericsSpec step_length_numerics() const {
+    NumericsSpec n = scenario.numerics;
+    if (scenario.contact.gamma_c > 0.0) n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, scenario.contact.dist0_m);
+    return n;
+  }
+
   /// One step: its length, the attempts at it (retries and failure policy in
   /// run_attempts), the report.
   StepReport step() {
     StepReport report;
     double k = core::choose_time_step(
-        scenario.numerics, state.functionals, core::cut_patch_side(mesh, cut_next), state.time_s,
+        step_length_numerics(), state.functionals, core::cut_patch_side(mesh, cut_next), state.time_s,
         state.time_step_limit_s,
         core::solid_motion(cut_cur, state.solution, cut_prev, state.previous_solution, state.time_step_s));
     fe::QuadratureTable quad = fe::build_quadrature(cut_next);
@@ -491,7 +588,8 @@ struct Engine::Impl {
                                "penalty contact active, max pressure " +
                                    std::to_string(system.max_contact_pressure()) + " Pa, force on the body (" +
                                    std::to_string(system.contact_force_on_body().x()) + ", " +
-                                   std::to_string(system.contact_force_on_body().y()) + ") N/m"});
+                                   std::to_string(system.contact_force_on_body().y()) + ") N/m" +
+                                   bodies_in_contact()});
     finish_report(k, attempts, report);
     return report;
   }
@@ -584,7 +682,8 @@ struct Engine::Impl {
     const double tolerance_m = scenario.numerics.time_error_tolerance_m;
     if (tolerance_m > 0.0 && state.step >= 1)
       report.time_error_m = core::displacement_error_estimate(cut_prev, state.previous_solution, cut_cur,
-                                                              state.solution, cut_next, x, state.time_step_s, k);
+                                                              state.solution, cut_next, x, state.time_step_s, k,
+                                                              node_bodies(cut_next, body_next));
     accept(std::move(x), k, std::move(quad), std::move(outcome), report);
     if (a.contact_turned) forget_factorization();
     report.accepted = true;
@@ -730,6 +829,12 @@ void Engine::remesh_from(const Engine& source) {
 
 double Engine::rereference() {
   Impl& e = *impl_;
+  if (scene_bodies(e.scenario).size() > 1) {  // every body, each in its own region
+    const double before = e.state.body_references.empty() ? 0.0 : e.state.body_references[0].rotation_rad;
+    e.rereference_bodies();
+    e.after_state_change();
+    return e.state.body_references[0].rotation_rad - before;
+  }
   const core::RigidFit fit = core::fit_rigid_motion(e.cut_cur, e.state.solution);
   if (fit.nodes == 0) return 0.0;
   e.rereference(fit);
@@ -738,7 +843,7 @@ double Engine::rereference() {
 }
 
 FieldView Engine::view() const {
-  return core::build_field_view(impl_->mesh, impl_->cut_cur, impl_->state, impl_->scenario);
+  return core::build_field_view(impl_->mesh, impl_->cut_cur, impl_->state, impl_->scenario, impl_->body_cur);
 }
 
 }  // namespace fsi

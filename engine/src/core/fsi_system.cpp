@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 
 #include "core/contact_distance.hpp"
 #include "core/initial_guess.hpp"
@@ -37,9 +39,10 @@ FsiSystem::FsiSystem(const Scenario& scenario, const mesh::PatchMesh& mesh)
   c.k_s = scenario.numerics.time_step_s;
   c.rho_f = scenario.fluid.density_kgpm3;
   c.nu_f = scenario.fluid.viscosity_m2ps;
-  c.rho_s0 = scenario.solid.density_kgpm3;
-  c.mu_s = scenario.solid.mu_pa;
-  c.lambda_s = scenario.solid.lambda_pa;
+  for (const BodySpec& body : scene_bodies(scenario)) body_material_.push_back(body_solid(scenario, body));
+  c.rho_s0 = body_material_[0].density_kgpm3;
+  c.mu_s = body_material_[0].mu_pa;
+  c.lambda_s = body_material_[0].lambda_pa;
   c.gx = scenario.gravity_mps2.x;
   c.gy = scenario.gravity_mps2.y;
   c.rho_buoyancy = scenario.buoyancy ? scenario.fluid.density_kgpm3 : 0.0;
@@ -177,33 +180,101 @@ void FsiSystem::build_open_sides() {
   open_first_[cut.num_elements()] = static_cast<int>(open_sides_.size());
 }
 
+const forms::FsiCoefficients& FsiSystem::element_coefficients(int k, forms::FsiCoefficients& scratch) const {
+  if (body_material_.size() < 2 || static_cast<std::size_t>(k) >= element_body_.size() || element_body_[k] <= 0)
+    return coefficients_;
+  const SolidSpec& m = body_material_[static_cast<std::size_t>(element_body_[k])];
+  scratch = coefficients_;
+  scratch.rho_s0 = m.density_kgpm3;
+  scratch.mu_s = m.mu_pa;
+  scratch.lambda_s = m.lambda_pa;
+  return scratch;
+}
+
 void FsiSystem::build_contact_forces() {
   // Penalty contact (Sect. 12.5): on the interface, where dist < dist_0, the solid feels
   // the pressure P_c = gamma_c (dist_0 - dist) / dist, i.e. the traction -P_c n_s
   // (n_s: outer normal of the solid), which pushes it away from the wall. In residual
-  // form this adds + int_I P_c n_s . phi.
+  // form this adds + int_I P_c n_s . phi. With several bodies dist is also the distance
+  // to the other bodies' interfaces: two bodies push each other apart as a body and a
+  // wall do (ours).
   const fe::CutMesh& cut = *cut_;
   contact_force_.setZero(pattern_.rows());
   max_contact_pressure_ = 0.0;
   contact_force_on_body_n_per_m_ = mesh::Vec2::Zero();
-  const double gamma_c = scenario_.contact.gamma_c, dist0 = scenario_.contact.dist0_m;
-  if (!(gamma_c > 0.0 && dist0 > 0.0)) return;
-  // Tread edges push like a flat wall tangent to the body (contact_distance.hpp).
-  Eigen::Vector2d body_centroid_m(0.0, 0.0);  // the whole solid's (below: one patch's)
-  double solid_area_m2 = 0.0;
-  for (int k = 0; k < cut.num_elements(); ++k) {
-    if (cut.elements[k].phase != Phase::solid) continue;
-    for (int q = quadrature_->first[k]; q < quadrature_->first[k + 1]; ++q) {
-      solid_area_m2 += quadrature_->points[q].weight;
-      body_centroid_m += quadrature_->points[q].weight * quadrature_->points[q].x;
+  min_body_gap_m_ = std::numeric_limits<double>::infinity();
+  closest_bodies_ = {-1, -1};
+  const std::size_t num_bodies = body_material_.size();
+  contact_force_per_body_n_per_m_.assign(num_bodies, mesh::Vec2::Zero());
+  // The body of every interface segment: that of its patch's solid sub-elements.
+  std::vector<int> segment_body(cut.interface.size(), 0);
+  if (num_bodies > 1 && element_body_.size() == cut.elements.size())
+    for (std::size_t i = 0; i < cut.interface.size(); ++i)
+      for (int k = cut.first_element[cut.interface[i].patch]; k < cut.first_element[cut.interface[i].patch + 1]; ++k)
+        if (element_body_[k] >= 0) {
+          segment_body[i] = element_body_[k];
+          break;
+        }
+  // The gap between each two bodies, and the distance of a point to the other bodies.
+  const auto distance_to_other_bodies = [&](const mesh::Vec2& x, int body) {
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < cut.interface.size(); ++i) {
+      if (segment_body[i] == body) continue;
+      const fe::InterfaceSegment& seg = cut.interface[i];
+      d = std::min(d, mesh::distance_to_segment(Segment2{{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}}, x));
+    }
+    return d;
+  };
+  if (num_bodies > 1)
+    for (std::size_t i = 0; i < cut.interface.size(); ++i)
+      for (const mesh::Vec2& x : {cut.interface[i].a, cut.interface[i].b}) {
+        const double d = distance_to_other_bodies(x, segment_body[i]);
+        if (d < min_body_gap_m_) {
+          min_body_gap_m_ = d;
+          closest_bodies_[0] = segment_body[i];
+        }
+      }
+  if (closest_bodies_[0] >= 0) {  // the body on the other side of that gap
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < cut.interface.size(); ++i) {
+      if (segment_body[i] == closest_bodies_[0]) continue;
+      for (const mesh::Vec2& x : {cut.interface[i].a, cut.interface[i].b}) {
+        const double d = distance_to_other_bodies(x, segment_body[i]);
+        if (d < best) {
+          best = d;
+          closest_bodies_[1] = segment_body[i];
+        }
+      }
     }
   }
-  if (solid_area_m2 > 0.0) body_centroid_m /= solid_area_m2;
-  const ContactDistance distance(scenario_.walls, cut.interface, body_centroid_m, dist0,
-                                 body_reach(scenario_.body),
-                                 scenario_.contact.corners_as_walls && solid_area_m2 > 0.0);
+  const double gamma_c = scenario_.contact.gamma_c, dist0 = scenario_.contact.dist0_m;
+  if (!(gamma_c > 0.0 && dist0 > 0.0)) return;
+  // Tread edges push like a flat wall tangent to the body (contact_distance.hpp): one
+  // distance per body, each with its own centroid.
+  std::vector<Eigen::Vector2d> body_centroid_m(num_bodies, Eigen::Vector2d::Zero());
+  std::vector<double> solid_area_m2(num_bodies, 0.0);
+  for (int k = 0; k < cut.num_elements(); ++k) {
+    if (cut.elements[k].phase != Phase::solid) continue;
+    const std::size_t b = element_body_.size() == cut.elements.size() ? static_cast<std::size_t>(std::max(0, element_body_[k])) : 0;
+    for (int q = quadrature_->first[k]; q < quadrature_->first[k + 1]; ++q) {
+      solid_area_m2[b] += quadrature_->points[q].weight;
+      body_centroid_m[b] += quadrature_->points[q].weight * quadrature_->points[q].x;
+    }
+  }
+  const std::span<const BodySpec> bodies = scene_bodies(scenario_);
+  std::vector<ContactDistance> distances;
+  for (std::size_t b = 0; b < num_bodies; ++b) {
+    if (solid_area_m2[b] > 0.0) body_centroid_m[b] /= solid_area_m2[b];
+    std::vector<fe::InterfaceSegment> own;
+    for (std::size_t i = 0; i < cut.interface.size(); ++i)
+      if (segment_body[i] == static_cast<int>(b)) own.push_back(cut.interface[i]);
+    distances.emplace_back(scenario_.walls, own, body_centroid_m[b], dist0, body_reach(bodies[b]),
+                           scenario_.contact.corners_as_walls && solid_area_m2[b] > 0.0);
+  }
+  const bool bodies_near = min_body_gap_m_ < dist0;
   const double g = 0.5 / std::sqrt(3.0);
-  for (const fe::InterfaceSegment& seg : cut.interface) {
+  for (std::size_t i = 0; i < cut.interface.size(); ++i) {
+    const fe::InterfaceSegment& seg = cut.interface[i];
     // Solid side: centroid of the patch's solid sub-elements.
     mesh::Vec2 centroid = mesh::Vec2::Zero();
     int count = 0;
@@ -220,14 +291,17 @@ void FsiSystem::build_contact_forces() {
     if (len <= 0.0) continue;
     mesh::Vec2 n(d.y() / len, -d.x() / len);
     if (n.dot(0.5 * (seg.a + seg.b) - centroid) < 0.0) n = -n;
+    const ContactDistance& distance = distances[static_cast<std::size_t>(segment_body[i])];
     for (double s : {0.5 - g, 0.5 + g}) {
       const mesh::Vec2 x = seg.a + s * d;
-      const double dist = distance(x);
+      double dist = distance(x);
+      if (bodies_near) dist = std::min(dist, distance_to_other_bodies(x, segment_body[i]));
       if (dist >= dist0) continue;
       const double pc = gamma_c * (dist0 - dist) / std::max(dist, scenario_.contact.min_dist_fraction * dist0);
       max_contact_pressure_ = std::max(max_contact_pressure_, pc);
       const double w = 0.5 * len * pc;
       contact_force_on_body_n_per_m_ -= mesh::Vec2(w * n[0], w * n[1]);
+      contact_force_per_body_n_per_m_[static_cast<std::size_t>(segment_body[i])] -= mesh::Vec2(w * n[0], w * n[1]);
       for (int f = 0; f < 2; ++f) {
         contact_force_[kFieldsPerNode * seg.node[0] + f] += w * (1.0 - s) * n[f];
         contact_force_[kFieldsPerNode * seg.node[1] + f] += w * s * n[f];
@@ -263,6 +337,7 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
     // Jacobian by hand (forms/fluid_element_jacobian.hpp), with the same residual bits.
     std::array<double, forms::kMaxLocal> xd, rd;
     forms::ElementMatrix kd;
+    forms::FsiCoefficients own;  // a solid element's body material (element_coefficients)
     double* values = kJacobian ? jacobian->valuePtr() : nullptr;
     for (int i = begin; i < end; ++i) {
       const int p = patches[i];
@@ -306,7 +381,7 @@ void FsiSystem::assemble(const Eigen::VectorXd& x, Eigen::VectorXd& r,
           }
         }
         for (int l = nl; l < forms::kMaxLocal; ++l) xl[l] = Scalar(0.0);
-        forms::element_residual<Scalar>(in, coefficients_, xl, rl);
+        forms::element_residual<Scalar>(in, element_coefficients(k, own), xl, rl);
         for (int l = 0; l < nl; ++l) {
           const int row = kFieldsPerNode * e.node[l / kFieldsPerNode] + l % kFieldsPerNode;
           if constexpr (kJacobian) {

@@ -6,6 +6,7 @@
 /// on it -- sub-elements, quadrature, stabilization edges, old values at T_m, contact
 /// forces, positions of element entries in the fixed sparsity pattern -- is computed
 /// once per step in set_step() and reused by every Newton iteration.
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,6 +30,10 @@ class FsiSystem {
   /// boundary sides, contact forces. Old values are set separately (set_old_values).
   void set_geometry(const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
                     double time_step_s);
+  /// The body of each sub-element of the next geometry (interface::element_bodies; -1:
+  /// fluid): its material, and whose interface each contact force acts on. Set before
+  /// set_geometry, which builds the contact forces. Empty: every solid element is body 0.
+  void set_element_bodies(std::vector<int> body) { element_body_ = std::move(body); }
   /// Old values at T_m, one per quadrature point of the current geometry.
   void set_old_values(std::vector<forms::OldValues> old) { old_ = std::move(old); }
   void set_time_step(double k_s) { coefficients_.k_s = k_s; }
@@ -70,8 +75,14 @@ class FsiSystem {
 
   /// The largest penalty contact pressure of this step [Pa] (0: inactive).
   double max_contact_pressure() const { return max_contact_pressure_; }
-  /// The penalty force on the body this step, -int_I P_c n_s [N per m of depth].
+  /// The penalty force on the bodies this step, -int_I P_c n_s [N per m of depth], summed.
   mesh::Vec2 contact_force_on_body() const { return contact_force_on_body_n_per_m_; }
+  /// The same for each body (scene order).
+  const std::vector<mesh::Vec2>& contact_force_per_body() const { return contact_force_per_body_n_per_m_; }
+  /// The smallest distance between the interfaces of two bodies this step [m] (infinity
+  /// with one body), and the two bodies.
+  double min_body_gap() const { return min_body_gap_m_; }
+  std::array<int, 2> closest_bodies() const { return closest_bodies_; }
   const forms::FsiCoefficients& coefficients() const { return coefficients_; }
 
  private:
@@ -80,6 +91,8 @@ class FsiSystem {
                 bool constrain = true) const;
   void build_open_sides();
   void build_contact_forces();
+  /// The coefficients of sub-element k: the body's own material for a solid one.
+  const forms::FsiCoefficients& element_coefficients(int k, forms::FsiCoefficients& scratch) const;
 
   const Scenario& scenario_;
   NumericsSpec numerics_;  ///< the scenario's, or what set_numerics was last given
@@ -89,6 +102,7 @@ class FsiSystem {
   std::vector<std::vector<int>> patch_groups_;  ///< mesh::colour_patches: assembled group by group
   std::vector<char> released_;                  ///< set_released_nodes
   int threads_ = 1;                              ///< threads of the element loop
+  std::vector<SolidSpec> body_material_;        ///< per body (scene_bodies order)
   std::vector<int> dirichlet_dofs_;
   std::vector<std::vector<int>> dirichlet_row_entries_;  ///< value indices of each Dirichlet row
 
@@ -96,6 +110,7 @@ class FsiSystem {
   const fe::CutMesh* cut_ = nullptr;
   const fe::QuadratureTable* quadrature_ = nullptr;
   std::vector<forms::OldValues> old_;
+  std::vector<int> element_body_;                  ///< set_element_bodies
   solve::SparseMatrix cip_;                        ///< S_aniso on the p-p block, node by node
   std::vector<int> cip_position_;                  ///< value index in pattern_ of each cip_ entry
   std::vector<int> entry_first_;                   ///< per element: offset into entry_
@@ -105,6 +120,9 @@ class FsiSystem {
   Eigen::VectorXd contact_force_;                  ///< constant residual part
   double max_contact_pressure_ = 0.0;
   mesh::Vec2 contact_force_on_body_n_per_m_ = mesh::Vec2::Zero();
+  std::vector<mesh::Vec2> contact_force_per_body_n_per_m_;
+  double min_body_gap_m_ = 0.0;
+  std::array<int, 2> closest_bodies_{-1, -1};
 };
 
 }  // namespace fsi::core

@@ -16,8 +16,17 @@ namespace fsi::core {
 /// `geometry`: the cut mesh whose interface is the body's current position (built from
 /// the newest displacement); `cut` + `quadrature`: the mesh the solution lives on;
 /// `reference_rotation_rad`: the turn re-referencing took out of u (State).
+/// With several bodies, `geometry_body` and `cut_body` give the body of each sub-element
+/// of `geometry` and `cut` (interface::element_bodies) for the per-body functionals, and
+/// `body_references` the turns re-referencing took out of each body's u.
 Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geometry,
                                 const fe::CutMesh& cut, const fe::QuadratureTable& quadrature,
-                                const Eigen::VectorXd& solution, double reference_rotation_rad);
+                                const Eigen::VectorXd& solution, double reference_rotation_rad,
+                                const std::vector<int>& geometry_body = {}, const std::vector<int>& cut_body = {},
+                                const std::vector<State::BodyReference>& body_references = {});
+
+/// The body of each interface segment of `cut` (that of its patch's solid sub-elements;
+/// 0 where element_body is empty).
+std::vector<int> segment_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body);
 
 }  // namespace fsi::core

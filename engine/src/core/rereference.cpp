@@ -18,11 +18,20 @@ mesh::Vec2 rotate(double angle, const mesh::Vec2& v) {
 
 }  // namespace
 
-RigidFit fit_rigid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution) {
+std::vector<char> body_nodes(const fe::CutMesh& cut, const std::vector<int>& element_body, int body) {
+  std::vector<char> nodes(cut.x.size(), 0);
+  for (std::size_t k = 0; k < cut.elements.size() && k < element_body.size(); ++k)
+    if (element_body[k] == body)
+      for (int a = 0; a < cut.elements[k].vertices; ++a) nodes[cut.elements[k].node[a]] = 1;
+  return nodes;
+}
+
+RigidFit fit_rigid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution, const std::vector<char>* nodes) {
   RigidFit fit;
   const int n = static_cast<int>(cut.x.size());
+  const auto used = [&](int i) { return cut.touches_solid[i] && !cut.touches_fluid[i] && (!nodes || (*nodes)[i]); };
   for (int i = 0; i < n; ++i)
-    if (cut.touches_solid[i] && !cut.touches_fluid[i]) {
+    if (used(i)) {
       fit.from_mean += cut.x[i] - displacement(solution, i);
       fit.to_mean += cut.x[i];
       ++fit.nodes;
@@ -33,7 +42,7 @@ RigidFit fit_rigid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solutio
   // 2D Procrustes: the angle maximizing sum b . Q a is atan2(sum a x b, sum a . b).
   double cross = 0.0, dot = 0.0;
   for (int i = 0; i < n; ++i)
-    if (cut.touches_solid[i] && !cut.touches_fluid[i]) {
+    if (used(i)) {
       const mesh::Vec2 a = cut.x[i] - displacement(solution, i) - fit.from_mean;
       const mesh::Vec2 b = cut.x[i] - fit.to_mean;
       cross += a.x() * b.y() - a.y() * b.x();
@@ -43,8 +52,10 @@ RigidFit fit_rigid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solutio
   return fit;
 }
 
-void rereference_displacement(const fe::CutMesh& cut, const RigidFit& fit, Eigen::VectorXd& solution) {
+void rereference_displacement(const fe::CutMesh& cut, const RigidFit& fit, Eigen::VectorXd& solution,
+                              const std::vector<char>* nodes) {
   for (int i = 0; i < static_cast<int>(cut.x.size()); ++i) {
+    if (nodes && !(*nodes)[i]) continue;
     const mesh::Vec2 X = cut.x[i] - displacement(solution, i);
     const mesh::Vec2 u = cut.x[i] - rereferenced_point(fit, X);
     solution[kFieldsPerNode * i + kUx] = u.x();

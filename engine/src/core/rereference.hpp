@@ -23,6 +23,8 @@
 /// fluid the affine image of the old extension no longer meets the natural wall condition;
 /// the next step's Newton solves the extension rows afresh, to the small extension of the
 /// elastic part: that, not the physics, is what changes.
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "fe/cut_mesh.hpp"
@@ -39,13 +41,21 @@ struct RigidFit {
 };
 
 /// Least-squares rigid motion taking the initial points X = x - u(x) of the nodes inside
-/// the solid (solid sub-elements only) of `cut` onto their positions x.
-RigidFit fit_rigid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution);
+/// the solid (solid sub-elements only) of `cut` onto their positions x; with `nodes`, only
+/// those it marks (one body of several: body_nodes).
+RigidFit fit_rigid_motion(const fe::CutMesh& cut, const Eigen::VectorXd& solution,
+                          const std::vector<char>* nodes = nullptr);
+
+/// The nodes of `cut` that belong to a solid sub-element of body `body` (element_body:
+/// interface::element_bodies of `cut`).
+std::vector<char> body_nodes(const fe::CutMesh& cut, const std::vector<int>& element_body, int body);
 
 /// u' = x - (Q (x - u - from_mean) + to_mean) at every node (positions of `cut`, the
 /// mesh of that level: moved nodes at their moved place). Affine in x and u, so exact for
 /// the finite element functions, not only at the nodes.
-void rereference_displacement(const fe::CutMesh& cut, const RigidFit& fit, Eigen::VectorXd& solution);
+/// With `nodes`, only at the nodes it marks (one body's region of several).
+void rereference_displacement(const fe::CutMesh& cut, const RigidFit& fit, Eigen::VectorXd& solution,
+                              const std::vector<char>* nodes = nullptr);
 
 /// The reference ball's centre c moved by the same map: Q (c - from_mean) + to_mean.
 mesh::Vec2 rereferenced_point(const RigidFit& fit, const mesh::Vec2& c);

@@ -15,6 +15,8 @@
 /// translating body has u = its displacement at every such node), so e is the error of
 /// where the body is: what the bounce's events (turn, contact, rebound) depend on. Its
 /// velocity error, k^2 / 2 |a'|, enters through the next step's displacement.
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "fe/cut_mesh.hpp"
@@ -24,10 +26,13 @@ namespace fsi::core {
 /// The estimate e [m] for the step from `current` to `next` (length k_s [s]) after the
 /// step from `previous` to `current` (length previous_k_s [s]); negative when it cannot
 /// be estimated (the first step, or no node inside the solid at all three levels).
+/// Several bodies: `node_body` gives the body of each node (-1: none), y is each body's
+/// own mean displacement and e the largest of the bodies' (the mean over all would cancel
+/// for two bodies that move apart). Empty: one body.
 double displacement_error_estimate(const fe::CutMesh& previous_cut, const Eigen::VectorXd& previous,
                                    const fe::CutMesh& current_cut, const Eigen::VectorXd& current,
                                    const fe::CutMesh& next_cut, const Eigen::VectorXd& next, double previous_k_s,
-                                   double k_s);
+                                   double k_s, const std::vector<int>& node_body = {});
 
 /// The longest step [s] after a step of length k_s [s] with error estimate error_m [m] for
 /// the tolerance tolerance_m [m] per step: k (tolerance / e)^{1/2} (e grows like k^2) with a

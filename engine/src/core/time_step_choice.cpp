@@ -53,17 +53,22 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
   const double longest_s = std::min(n.time_step_max_s(), history_s);
   // In the wall zone only up to time_step_wall_zone_max_s() (0: k).
   double longest_in_zone_s = std::min(std::max(k, n.time_step_wall_zone_max_s()), longest_s);
+  // With several bodies the gap between two of them counts as a wall's, and the fastest
+  // body's speed as the scene's.
+  double distance_m = f.min_distance_m;
+  for (const Functionals::Body& b : f.bodies) distance_m = std::min(distance_m, b.min_body_distance_m);
   // In real contact (distance 0 with an interface) the wall itself is no distance away:
   // only a body at rest there takes longer steps, by the patch rule alone.
-  const bool touching = f.min_distance_m > 0.0 && f.min_distance_m < kTouchingDistance_m;
-  const bool real_contact = (!(f.min_distance_m > 0.0) || touching) && std::isfinite(cut_patch_side_m);
+  const bool touching = distance_m > 0.0 && distance_m < kTouchingDistance_m;
+  const bool real_contact = (!(distance_m > 0.0) || touching) && std::isfinite(cut_patch_side_m);
   if (touching) longest_in_zone_s = std::min(longest_in_zone_s, kTouchingStepFactor * k);
-  const double gap_m = f.min_distance_m - n.time_step_wall_zone_m;
-  const double speed_mps = std::hypot(f.mean_vx_mps, f.mean_vy_mps);
+  const double gap_m = distance_m - n.time_step_wall_zone_m;
+  double speed_mps = std::hypot(f.mean_vx_mps, f.mean_vy_mps);
+  for (const Functionals::Body& b : f.bodies) speed_mps = std::max(speed_mps, std::hypot(b.mean_vx_mps, b.mean_vy_mps));
   // In the zone: what the solid's nodes reach soon, not only the mean (see
   // kWallZoneLookahead_s).
   const double nodes_soon_mps = motion.max_speed_mps + motion.max_acceleration_mps2 * kWallZoneLookahead_s;
-  if (!std::isfinite(speed_mps) || !std::isfinite(nodes_soon_mps) || !std::isfinite(f.min_distance_m)) return k;
+  if (!std::isfinite(speed_mps) || !std::isfinite(nodes_soon_mps) || !std::isfinite(distance_m)) return k;
   const double zone_speed_mps = std::max(speed_mps, nodes_soon_mps);
   // A longer step must not overshoot the end (t accumulates rounding: a little slack).
   const double time_left_s = n.end_time_s - time_s + 1e-6 * k;
@@ -73,7 +78,7 @@ double choose_time_step(const NumericsSpec& n, const Functionals& f, double cut_
     // about to enter): as many to reach the wall itself.
     const bool outside_zone_ok = gap_m > 0.0 && kStepsToWallZone * speed_mps * longer <= gap_m;
     const bool in_zone_ok = longer <= longest_in_zone_s * (1.0 + 1e-12) &&
-                            ((f.min_distance_m > 0.0 && kStepsToWallZone * zone_speed_mps * longer <= f.min_distance_m) ||
+                            ((distance_m > 0.0 && kStepsToWallZone * zone_speed_mps * longer <= distance_m) ||
                              real_contact) &&
                             zone_speed_mps * longer <=
                                 kWallZonePatchFraction * n.time_step_patch_fraction * cut_patch_side_m;

@@ -91,15 +91,65 @@ Vec2 initial_fluid_velocity(const BodySpec& body, const Vec2& x) {
   return s * (2.0 * u.dot(e) * e - u);
 }
 
-fe::LevelSet ips_level_set(const BodySpec& body, const fe::CutMesh& cut,
+double scene_distance(std::span<const BodySpec> bodies, const Vec2& X) {
+  double d = initial_distance(bodies[0], X);
+  for (std::size_t i = 1; i < bodies.size(); ++i) d = std::min(d, initial_distance(bodies[i], X));
+  return d;
+}
+
+int nearest_body(std::span<const BodySpec> bodies, const Vec2& X, int ties) {
+  int best = 0;
+  double d = initial_distance(bodies[0], X);
+  for (std::size_t i = 1; i < bodies.size(); ++i) {
+    const double di = initial_distance(bodies[i], X);
+    if (di < d) {
+      d = di;
+      best = static_cast<int>(i);
+    }
+  }
+  if (ties >= 0) return best;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (static_cast<int>(i) != best && initial_distance(bodies[i], X) - d <= kTieDistance_m) return ties;
+  return best;
+}
+
+Vec2 initial_fluid_velocity(std::span<const BodySpec> bodies, const Vec2& x) {
+  Vec2 v = Vec2::Zero();
+  for (const BodySpec& body : bodies) v += initial_fluid_velocity(body, x);
+  return v;
+}
+
+fe::LevelSet ips_level_set(std::span<const BodySpec> bodies, const fe::CutMesh& cut,
                            const fe::PatchBuckets& buckets, const Eigen::VectorXd& solution) {
-  return [&body, &cut, &buckets, &solution](const Vec2& x) {
+  return [bodies, &cut, &buckets, &solution](const Vec2& x) {
     const fe::Location loc = fe::locate(cut, buckets, x, 1e-6);
-    if (loc.element < 0) return initial_distance(body, x);
+    if (loc.element < 0) return scene_distance(bodies, x);
     const Vec2 u(fe::evaluate(cut, loc, solution, kFieldsPerNode, kUx),
                  fe::evaluate(cut, loc, solution, kFieldsPerNode, kUy));
-    return initial_distance(body, x - u);
+    return scene_distance(bodies, x - u);
   };
+}
+
+std::vector<int> element_bodies(std::span<const BodySpec> bodies, const fe::CutMesh& next, const fe::CutMesh& cut,
+                                const fe::PatchBuckets& buckets, const Eigen::VectorXd& solution) {
+  std::vector<int> body(next.elements.size(), -1);
+  for (std::size_t k = 0; k < next.elements.size(); ++k) {
+    const fe::SubElement& e = next.elements[k];
+    if (e.phase != Phase::solid) continue;
+    if (bodies.size() == 1) {
+      body[k] = 0;
+      continue;
+    }
+    Vec2 c = Vec2::Zero();
+    for (int i = 0; i < e.vertices; ++i) c += next.x[e.node[i]];
+    c /= e.vertices;
+    const fe::Location loc = fe::locate(cut, buckets, c, 1e-6);
+    const Vec2 u = loc.element < 0 ? Vec2::Zero()
+                                   : Vec2(fe::evaluate(cut, loc, solution, kFieldsPerNode, kUx),
+                                          fe::evaluate(cut, loc, solution, kFieldsPerNode, kUy));
+    body[k] = nearest_body(bodies, c - u);
+  }
+  return body;
 }
 
 }  // namespace fsi::interface
@@ -114,6 +164,15 @@ double body_area(const BodySpec& body) {
     case BodyShape::rounded_rectangle: return 4.0 * a * b - (4.0 - std::numbers::pi) * r * r;
   }
   return std::numbers::pi * r * r;
+}
+
+std::span<const BodySpec> scene_bodies(const Scenario& scenario) {
+  if (scenario.bodies.empty()) return {&scenario.body, 1};
+  return scenario.bodies;
+}
+
+const SolidSpec& body_solid(const Scenario& scenario, const BodySpec& body) {
+  return body.solid ? *body.solid : scenario.solid;
 }
 
 double body_reach(const BodySpec& body) {

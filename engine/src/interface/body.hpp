@@ -2,6 +2,9 @@
 /// \file body.hpp
 /// The body's initial geometry d0 (signed distance, negative inside) and the Initial
 /// Point Set level set phi(x) = d0(x - u(x)) (docs/method.md, "The interface").
+#include <span>
+#include <vector>
+
 #include "fe/point_locator.hpp"
 #include "fsi/scenario.hpp"
 
@@ -32,9 +35,40 @@ inline double initial_distance(const BodySpec& body, const Vec2& X) {
 /// corrects, as it corrects the circle's flow for the walls.
 Vec2 initial_fluid_velocity(const BodySpec& body, const Vec2& x);
 
-/// phi(x) = d0(x - u(x)) for the displacement coefficients `solution` on `cut`. Points
-/// the locator cannot place (outside the domain) use u = 0.
-fe::LevelSet ips_level_set(const BodySpec& body, const fe::CutMesh& cut,
+/// The scene's d0: the smallest of the bodies' d0 (negative inside any body). Bodies are
+/// disjoint, so inside a body it is that body's d0 and between bodies the distance to the
+/// nearest one.
+double scene_distance(std::span<const BodySpec> bodies, const Vec2& X);
+
+/// Index of the body whose d0 is smallest at X (the body X belongs to, or the nearest).
+/// Where two bodies share the smallest d0: the lower index, or, if `ties` is negative,
+/// `ties` for every point whose two smallest d0 are within kTieDistance_m (a point on the
+/// mirror line between two bodies belongs to neither, whatever the rounding of its u).
+int nearest_body(std::span<const BodySpec> bodies, const Vec2& X, int ties = 0);
+
+/// Two d0 this close [m] are equal for nearest_body's ties: rounding of u and d0 at the
+/// size of a lab set-up is 1e-16 m.
+inline constexpr double kTieDistance_m = 1e-12;
+
+/// The initial flow of several bodies: the sum of each body's potential flow (exact for
+/// one body; for several a start that the first step corrects, like the walls).
+Vec2 initial_fluid_velocity(std::span<const BodySpec> bodies, const Vec2& x);
+
+/// phi(x) = d0(x - u(x)) for the displacement coefficients `solution` on `cut`, d0 the
+/// scene's (scene_distance). Points the locator cannot place (outside the domain) use
+/// u = 0. `bodies` must outlive the returned function.
+fe::LevelSet ips_level_set(std::span<const BodySpec> bodies, const fe::CutMesh& cut,
                            const fe::PatchBuckets& buckets, const Eigen::VectorXd& solution);
+inline fe::LevelSet ips_level_set(const BodySpec& body, const fe::CutMesh& cut, const fe::PatchBuckets& buckets,
+                                  const Eigen::VectorXd& solution) {
+  return ips_level_set(std::span<const BodySpec>(&body, 1), cut, buckets, solution);
+}
+
+/// The body each sub-element of `next` belongs to: nearest_body at its reference point
+/// x_c - u(x_c), x_c its centroid, u the displacement `solution` on `cut` (the mesh whose
+/// ips_level_set `next` was cut by). -1 for fluid sub-elements; with one body, 0 for
+/// every solid one.
+std::vector<int> element_bodies(std::span<const BodySpec> bodies, const fe::CutMesh& next, const fe::CutMesh& cut,
+                                const fe::PatchBuckets& buckets, const Eigen::VectorXd& solution);
 
 }  // namespace fsi::interface

@@ -36,7 +36,7 @@ Vec2 displacement(const fe::CutMesh& cut, const fe::Location& loc, const Eigen::
 
 MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuckets& buckets,
                                 const fe::CutMesh& next, const fe::QuadratureTable& quadrature,
-                                const Level& current, const Level& previous, const BodySpec& body,
+                                const Level& current, const Level& previous, std::span<const BodySpec> bodies,
                                 const std::vector<Segment2>& walls, const MappingOptions& options,
                                 std::vector<forms::OldValues>& old) {
   old.assign(quadrature.points.size(), forms::OldValues{});
@@ -44,6 +44,29 @@ MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuck
   const Eigen::VectorXd& s_cur = *current.solution;
   const fe::CutMesh& prev = *previous.cut;
   const Eigen::VectorXd& s_prev = *previous.solution;
+  // Several bodies: each one's interface segments in the new mesh. A fluid point within
+  // the identity gap of two bodies' interfaces is in the gap between them.
+  std::vector<std::vector<Segment2>> body_segments;
+  if (bodies.size() > 1 && options.element_body != nullptr && options.element_body->size() == next.elements.size()) {
+    body_segments.resize(bodies.size());
+    for (const fe::InterfaceSegment& seg : next.interface)
+      for (int k = next.first_element[seg.patch]; k < next.first_element[seg.patch + 1]; ++k) {
+        const int b = (*options.element_body)[k];
+        if (b < 0) continue;
+        body_segments[static_cast<std::size_t>(b)].push_back({{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}});
+        break;
+      }
+  }
+  const auto between_bodies = [&](const Vec2& x, double gap) {
+    int near = 0;
+    for (const std::vector<Segment2>& segments : body_segments)
+      for (const Segment2& s : segments)
+        if (mesh::distance_to_segment(s, x) < gap) {
+          ++near;
+          break;
+        }
+    return near >= 2;
+  };
 
   // Every quadrature point is mapped on its own and writes only old[q]: the patches go to
   // the threads in blocks dealt round-robin (the points that need (12.4) crowd around the
@@ -67,11 +90,12 @@ MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuck
         forms::OldValues& o = old[q];
         if (loc.element < 0) continue;  // outside the domain: cannot happen for interior points
         const Vec2 u_cur = displacement(cur, loc, s_cur);
-        double g = blend(std::abs(initial_distance(body, x - u_cur)), options.eps_patches * h,
-                         options.delta_patches * h);
+        const double phi = scene_distance(bodies, x - u_cur);
+        double g = blend(std::abs(phi), options.eps_patches * h, options.delta_patches * h);
         // The chapter's contact treatment: T_m = id in the fluid gap near a wall.
         const double gap = options.identity_gap_m > 0.0 ? options.identity_gap_m : mesh.patches[p].min_size_m;
         if (g > 0.0 && fluid && mesh::distance_to_walls(walls, x).distance_m < gap) g = 0.0;
+        if (g > 0.0 && fluid && !body_segments.empty() && phi < gap && between_bodies(x, gap)) g = 0.0;
         Vec2 t = x;
         if (g > 0.0) {
           // (12.4): y - u_prev(y) = x - u_cur(x), Newton from y0 = x - u_cur(x) + u_prev(x).

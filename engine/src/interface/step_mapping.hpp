@@ -9,7 +9,8 @@
 /// (1 - g) x blends to the identity: g = 1 within eps of the interface, 0 beyond delta,
 /// C^1 cubic in between, with |d0(x - u^{m-1}(x))| as the distance (exact for a rigid
 /// motion). In the fluid gap between body and wall T_m = id (the chapter's contact
-/// treatment). d_t T = g (x^m - x^{m-1}) / k.
+/// treatment), and so in the gap between two bodies (ours). d_t T = g (x^m - x^{m-1}) / k.
+#include <span>
 #include <vector>
 
 #include "fe/point_locator.hpp"
@@ -29,6 +30,9 @@ struct MappingOptions {
   double eps_patches = 1.5, delta_patches = 3.0;
   double identity_gap_m = 0.0;  ///< fluid points closer to a wall: T = id (0: the patch's shorter side)
   int threads = 1;              ///< threads of the point loop (the result does not depend on it)
+  /// Several bodies: the body of each sub-element of the new mesh (element_bodies), for
+  /// the gaps between bodies. Null or empty: one body.
+  const std::vector<int>* element_body = nullptr;
 };
 
 struct MappingStats {
@@ -41,7 +45,7 @@ struct MappingStats {
 /// `current` = level m-1 (its solution gives v, u old and u^{m-1}), `previous` = level m-2.
 MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuckets& buckets,
                                 const fe::CutMesh& next, const fe::QuadratureTable& quadrature,
-                                const Level& current, const Level& previous, const BodySpec& body,
+                                const Level& current, const Level& previous, std::span<const BodySpec> bodies,
                                 const std::vector<Segment2>& walls, const MappingOptions& options,
                                 std::vector<forms::OldValues>& old);
 

@@ -140,6 +140,12 @@ void write_levels(Writer& w, const State& state) {
   w.f64(state.reference_offset_x_m);
   w.f64(state.reference_offset_y_m);
   w.f64(state.reference_rotation_rad);
+  w.u64(state.body_references.size());
+  for (const State::BodyReference& b : state.body_references) {
+    w.f64(b.offset_x_m);
+    w.f64(b.offset_y_m);
+    w.f64(b.rotation_rad);
+  }
 }
 
 void read_levels(Reader& r, State& state, std::uint32_t version) {
@@ -156,6 +162,17 @@ void read_levels(Reader& r, State& state, std::uint32_t version) {
     state.reference_offset_x_m = r.f64("reference_offset_x_m");
     state.reference_offset_y_m = r.f64("reference_offset_y_m");
     state.reference_rotation_rad = r.f64("reference_rotation_rad");
+  }
+  if (version >= 7) {  // before: one body
+    const std::uint64_t bodies = r.u64("body_references");
+    // Bounded allocation; a count that does not match the bytes fails the reads or the
+    // "unexpected bytes" check below.
+    state.body_references.resize(std::min<std::uint64_t>(bodies, 64));
+    for (State::BodyReference& b : state.body_references) {
+      b.offset_x_m = r.f64("body_references/offset_x_m");
+      b.offset_y_m = r.f64("body_references/offset_y_m");
+      b.rotation_rad = r.f64("body_references/rotation_rad");
+    }
   }
 }
 

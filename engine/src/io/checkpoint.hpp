@@ -10,6 +10,7 @@
 ///   time_s f64, step i64, time_step_s f64
 ///   solution, previous_solution, node_xy, previous_node_xy: each u64 count + count f64
 ///   reference_offset_x_m, reference_offset_y_m, reference_rotation_rad f64 (version 6 on)
+///   body_references: u64 count + count x (offset_x_m, offset_y_m, rotation_rad) f64 (version 7 on)
 ///   functionals: 11 f64 in the order of fsi::Functionals' members
 ///   time_step_limit_s f64 (version 5 on)
 ///   checksum    u64 FNV-1a of every byte before it
@@ -26,8 +27,9 @@ namespace fsi::io {
 /// fingerprint leaves out the end time and covers contact.min_dist_fraction and
 /// numerics.cip_transient_weight; 4: the fingerprint leaves out the solver controls,
 /// io/fingerprint.hpp -- the layout is that of 3; 5: State::time_step_limit_s after the
-/// functionals; 6: the body's reference, State::reference_*, after each level block).
-inline constexpr std::uint32_t kCheckpointVersion = 6;
+/// functionals; 6: the body's reference, State::reference_*, after each level block; 7:
+/// State::body_references after it).
+inline constexpr std::uint32_t kCheckpointVersion = 7;
 /// The oldest version read: a version 3 file is the same layout with the older fingerprint,
 /// 3 and 4 continue with the limit at their last step.
 inline constexpr std::uint32_t kOldestCheckpointVersion = 3;

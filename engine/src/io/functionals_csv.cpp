@@ -2,6 +2,7 @@
 #include "fsi/output.hpp"
 
 #include <iterator>
+#include <utility>
 #include <stdexcept>
 #include <vector>
 
@@ -32,24 +33,43 @@ constexpr double Functionals::*kColumns[] = {
 /// without rotation_rad.
 constexpr std::size_t kOlderColumns[] = {std::size(kColumns) - 2, std::size(kColumns) - 1};
 
+/// Each body's columns in a scene with several, named body<n>_<name>.
+constexpr std::pair<const char*, double Functionals::Body::*> kBodyColumns[] = {
+    {"centroid_x_m", &Functionals::Body::centroid_x_m},
+    {"centroid_y_m", &Functionals::Body::centroid_y_m},
+    {"mean_vx_mps", &Functionals::Body::mean_vx_mps},
+    {"mean_vy_mps", &Functionals::Body::mean_vy_mps},
+    {"min_distance_m", &Functionals::Body::min_distance_m},
+    {"min_body_distance_m", &Functionals::Body::min_body_distance_m},
+    {"mass_error", &Functionals::Body::mass_error},
+    {"rotation_rad", &Functionals::Body::rotation_rad}};
+
+/// Scenes have at most this many bodies (io::kMaxBodies).
+constexpr std::size_t kMaxBodyColumns = 8;
+
 }  // namespace
 
-std::string functionals_csv_header(bool with_newton_columns) {
+std::string functionals_csv_header(bool with_newton_columns, std::size_t bodies) {
   std::string h = std::string(kCommonHeader) + kCavitationHeader + ",rotation_rad";
+  for (std::size_t b = 1; bodies > 1 && b <= bodies; ++b)
+    for (const auto& [name, member] : kBodyColumns) h.append(",body").append(std::to_string(b)).append("_").append(name);
   if (with_newton_columns) h += kNewtonHeader;
   return h;
 }
 
 bool is_functionals_csv_header(const std::string& line, bool with_newton_columns) {
   const std::string newton = with_newton_columns ? kNewtonHeader : "";
-  return line == functionals_csv_header(with_newton_columns) || line == std::string(kCommonHeader) + newton ||
-         line == std::string(kCommonHeader) + kCavitationHeader + newton;
+  for (std::size_t bodies = 1; bodies <= kMaxBodyColumns; ++bodies)
+    if (line == functionals_csv_header(with_newton_columns, bodies)) return true;
+  return line == std::string(kCommonHeader) + newton || line == std::string(kCommonHeader) + kCavitationHeader + newton;
 }
 
 std::string functionals_csv_row(long step, double time_s, const Functionals& f) {
   std::string row = std::to_string(step);
   row.append(",").append(number_text(time_s));
   for (double Functionals::*column : kColumns) row.append(",").append(number_text(f.*column));
+  for (const Functionals::Body& b : f.bodies)
+    for (const auto& [name, member] : kBodyColumns) row.append(",").append(number_text(b.*member));
   return row;
 }
 
@@ -71,7 +91,12 @@ FunctionalsCsvRow parse_functionals_csv_row(const std::string& line) {
   }
   constexpr std::size_t kWithNewton = 2 + std::size(kColumns) + 2;
   const bool older = v.size() == 2 + kOlderColumns[0] + 2 || v.size() == 2 + kOlderColumns[1] + 2;
-  if (v.size() != kWithNewton && !older) {
+  // Several bodies: their columns between the scene's and the newton columns.
+  const std::size_t body_cells = v.size() > kWithNewton ? v.size() - kWithNewton : 0;
+  const std::size_t bodies = body_cells / std::size(kBodyColumns);
+  const bool with_bodies = body_cells > 0 && body_cells % std::size(kBodyColumns) == 0 && bodies >= 2 &&
+                           bodies <= kMaxBodyColumns;
+  if (v.size() != kWithNewton && !older && !with_bodies) {
     throw std::invalid_argument("expected " + std::to_string(kWithNewton) + " columns (or " +
                                 std::to_string(2 + kOlderColumns[0] + 2) + " and " +
                                 std::to_string(2 + kOlderColumns[1] + 2) + " in files written before " +
@@ -80,8 +105,14 @@ FunctionalsCsvRow parse_functionals_csv_row(const std::string& line) {
   FunctionalsCsvRow r;
   r.step = static_cast<long>(v[0]);
   r.time_s = v[1];
-  const std::size_t columns = v.size() - 4;
+  const std::size_t columns = v.size() - 4 - body_cells;
   for (std::size_t i = 0; i < columns; ++i) r.functionals.*kColumns[i] = v[2 + i];
+  if (with_bodies) {
+    r.functionals.bodies.resize(bodies);
+    std::size_t cell = 2 + columns;
+    for (Functionals::Body& b : r.functionals.bodies)
+      for (const auto& [name, member] : kBodyColumns) b.*member = v[cell++];
+  }
   r.newton_iterations = static_cast<int>(v[v.size() - 2]);
   r.converged = v[v.size() - 1] != 0.0;
   return r;
@@ -97,15 +128,15 @@ std::string functionals_csv_row(long step, double time_s, const Functionals& f,
   return functionals_csv_row({step, time_s, f, report.newton_iterations, report.converged});
 }
 
-FunctionalsCsv::FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns)
+FunctionalsCsv::FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns, std::size_t bodies)
     : file_(file), with_newton_(with_newton_columns), out_(file, std::ios::trunc) {
   if (!out_) throw InputError(file.string(), "", "cannot open for writing");
-  write_line(functionals_csv_header(with_newton_));
+  write_line(functionals_csv_header(with_newton_, bodies));
 }
 
 FunctionalsCsv::FunctionalsCsv(const std::filesystem::path& file, bool with_newton_columns,
-                               const std::vector<std::string>& first_rows)
-    : FunctionalsCsv(file, with_newton_columns) {
+                               const std::vector<std::string>& first_rows, std::size_t bodies)
+    : FunctionalsCsv(file, with_newton_columns, bodies) {
   for (const std::string& row : first_rows) write_line(row);
 }
 

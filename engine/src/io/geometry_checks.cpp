@@ -205,7 +205,9 @@ void check_mesh(const MeshSpec& mesh, const KeyPath& at) {
   }
 }
 
-void check_body_and_walls(const Scenario& s, const KeyPath& at) {
+namespace {
+
+void check_walls(const Scenario& s, const KeyPath& at) {
   for (std::size_t w = 0; w < s.walls.size(); ++w) {
     const Segment2& wall = s.walls[w];
     if (!(std::hypot(wall.b.x - wall.a.x, wall.b.y - wall.a.y) > 0.0)) {
@@ -215,7 +217,28 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
                point_text(wall.a));
     }
   }
-  const auto quads = outlines(s.mesh, at / "mesh");
+}
+
+/// The point of the body's boundary in direction a from its centre: the shapes are
+/// star-shaped about it, so d0 changes sign once along the ray (bisection for the others).
+Point2 boundary_point(const BodySpec& body, double a) {
+  const Point2& c = body.center_m;
+  const double ca = std::cos(a), sa = std::sin(a);
+  if (body.shape == BodyShape::circle) return Point2{c.x + body.radius_m * ca, c.y + body.radius_m * sa};
+  double lo = 0.0, hi = body_reach(body) * (1.0 + 1e-9);
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (interface::initial_distance(body, {c.x + mid * ca, c.y + mid * sa}) < 0.0 ? lo : hi) = mid;
+  }
+  return Point2{c.x + hi * ca, c.y + hi * sa};
+}
+
+/// Boundary points 0.5 degree apart.
+constexpr int kBoundarySamples = 720;
+
+/// One body inside the meshed domain and clear of the walls; `at` is its key, `root` the file's.
+void check_body(const Scenario& s, const BodySpec& body, const KeyPath& root, const KeyPath& at) {
+  const auto quads = outlines(s.mesh, root / "mesh");
   Point2 lo{quads.front()[0]}, hi{quads.front()[0]};
   bool center_inside = false;
   for (const auto& quad : quads) {
@@ -223,45 +246,31 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
       lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
       hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
     }
-    center_inside = center_inside || inside(quad, s.body.center_m);
+    center_inside = center_inside || inside(quad, body.center_m);
   }
   const std::string box = interval_text({lo.x, hi.x}) + " x " + interval_text({lo.y, hi.y});
-  const Point2& c = s.body.center_m;
-  const double r = s.body.radius_m;
-  const BodySpec& body = s.body;
+  const Point2& c = body.center_m;
+  const double r = body.radius_m;
   const bool ball = body.shape == BodyShape::circle;
   if (body.shape == BodyShape::rounded_rectangle && !(r <= std::min(body.half_size_m.x, body.half_size_m.y))) {
-    fail(at / "body" / "radius_m",
+    fail(at / "radius_m",
          "the corner radius of a rounded rectangle must not exceed its half width or half height (half_size_m = " +
              point_text(body.half_size_m) + "), got " + number_text(r));
   }
-  // The point of the boundary in direction a from the centre: the shapes are star-shaped
-  // about it, so d0 changes sign once along the ray (bisection for the others).
-  const auto boundary_point = [&](double a) {
-    const double ca = std::cos(a), sa = std::sin(a);
-    if (ball) return Point2{c.x + r * ca, c.y + r * sa};
-    double lo = 0.0, hi = body_reach(body) * (1.0 + 1e-9);
-    for (int i = 0; i < 60; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (interface::initial_distance(body, {c.x + mid * ca, c.y + mid * sa}) < 0.0 ? lo : hi) = mid;
-    }
-    return Point2{c.x + hi * ca, c.y + hi * sa};
-  };
   if (!center_inside) {
-    fail(at / "body" / "center_m",
+    fail(at / "center_m",
          "must lie inside a mesh block (domain bounding box " + box + " m), got " + point_text(c));
   }
   // The domain is the union of the blocks, which need not be a rectangle (the stairs):
   // every point of the ball's boundary must lie in some block. Points 0.5 degree apart
   // miss at most r (1 - cos 0.25 deg) ~ 1e-5 r of a block corner poking into the ball.
-  constexpr int kSamples = 720;
-  for (int i = 0; i < kSamples; ++i) {
-    const double a = 2.0 * std::numbers::pi * i / kSamples;
-    const Point2 p = boundary_point(a);
+  for (int i = 0; i < kBoundarySamples; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / kBoundarySamples;
+    const Point2 p = boundary_point(body, a);
     const bool covered = std::any_of(quads.begin(), quads.end(),
                                      [&](const auto& quad) { return inside(quad, p); });
     if (!covered) {
-      fail(at / "body" / (ball ? "radius_m" : "half_size_m"),
+      fail(at / (ball ? "radius_m" : "half_size_m"),
            "must be small enough that the body at " + point_text(c) +
                " lies inside the meshed domain (the union of the blocks, bounding box " + box +
                " m); its boundary point " + point_text(p) + " lies outside every block, got " +
@@ -284,7 +293,7 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
     const double t = 0.5 * (lo + hi);
     const double d = std::min({d0(0.0), d0(1.0), d0(t)});
     if (!(d > 0.0)) {
-      fail(at / "body" / "center_m",
+      fail(at / "center_m",
            "the body must start clear of wall " + std::to_string(w) + ": its distance to the wall must be positive, got " +
                number_text(d) + " m near " + point_text(at_t(t)) + " with center " + point_text(c));
     }
@@ -292,12 +301,48 @@ void check_body_and_walls(const Scenario& s, const KeyPath& at) {
   for (std::size_t w = 0; w < s.walls.size() && ball; ++w) {
     const double d = distance_to_segment(c, s.walls[w]);
     if (!(d > r)) {
-      fail(at / "body" / "center_m",
+      fail(at / "center_m",
            "the ball must start clear of wall " + std::to_string(w) +
                ": distance from the center to the wall must exceed radius_m = " + number_text(r) +
                " m, got " + number_text(d) + " m at center " + point_text(c));
     }
   }
+}
+
+/// Two bodies must start apart: no boundary point of one inside or on the other (and
+/// neither centre inside the other, for a body entirely inside another).
+void check_bodies_apart(const Scenario& s, const KeyPath& at) {
+  for (std::size_t i = 0; i < s.bodies.size(); ++i)
+    for (std::size_t j = 0; j < s.bodies.size(); ++j) {
+      if (i == j) continue;
+      const BodySpec &a = s.bodies[i], &b = s.bodies[j];
+      double closest = interface::initial_distance(b, {a.center_m.x, a.center_m.y});
+      Point2 where = a.center_m;
+      for (int n = 0; n < kBoundarySamples; ++n) {
+        const Point2 p = boundary_point(a, 2.0 * std::numbers::pi * n / kBoundarySamples);
+        const double d = interface::initial_distance(b, {p.x, p.y});
+        if (d < closest) {
+          closest = d;
+          where = p;
+        }
+      }
+      if (!(closest > 0.0))
+        fail(at / "bodies" / std::max(i, j) / "center_m",
+             "bodies must start apart: body" + std::to_string(i + 1) + " reaches into body" + std::to_string(j + 1) +
+                 " at " + point_text(where) + " (distance " + number_text(closest) + " m)");
+    }
+}
+
+}  // namespace
+
+void check_body_and_walls(const Scenario& s, const KeyPath& at) {
+  check_walls(s, at);
+  if (s.bodies.empty()) {
+    check_body(s, s.body, at, at / "body");
+    return;
+  }
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) check_body(s, s.bodies[i], at, at / "bodies" / i);
+  check_bodies_apart(s, at);
 }
 
 }  // namespace fsi::io

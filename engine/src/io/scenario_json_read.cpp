@@ -129,6 +129,13 @@ void read(const json& j, const KeyPath& at, std::array<Point2, 4>& out, const Re
 template <class T>
 void read(const json& j, const KeyPath& at, T& out, const Fields&);
 
+/// An optional object: present in the file, its keys over the struct's defaults.
+template <class T>
+void read(const json& j, const KeyPath& at, std::optional<T>& out, const Fields&) {
+  out.emplace();
+  read(j, at, *out, Fields{});
+}
+
 template <class T, class R>
 void read(const json& j, const KeyPath& at, std::vector<T>& out, const List<R>& rule) {
   const std::string count = std::to_string(rule.min) + " to " + std::to_string(rule.max);
@@ -216,6 +223,11 @@ class RuleFinder {
   template <class T>
   void describe_member(T& member, const Fields&) {
     visit_fields(*this, member);
+  }
+  template <class T>
+  void describe_member(std::optional<T>&, const Fields& rule) {
+    T item{};
+    describe_member(item, rule);
   }
   template <class T, class R>
   void describe_member(std::vector<T>&, const List<R>& rule) {

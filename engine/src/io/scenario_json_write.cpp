@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -24,6 +25,11 @@ class JsonWriter {
   template <class T, class R>
   void operator()(std::string_view key, const T& member, const R& rule) {
     object[std::string(key)] = value(member, rule);
+  }
+  /// An optional object left out is not written.
+  template <class T, class R>
+  void operator()(std::string_view key, const std::optional<T>& member, const R& rule) {
+    if (member) object[std::string(key)] = value(*member, rule);
   }
 
  private:
@@ -143,11 +149,16 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
     writer.object["contact"].erase("corners_as_walls");
   // And buoyancy off and the circle, as every scenario was before the keys existed.
   if (!scenario.buoyancy) writer.object.erase("buoyancy");
-  if (scenario.body.shape == BodyShape::circle) {
-    writer.object["body"].erase("shape");
-    writer.object["body"].erase("half_size_m");
-    writer.object["body"].erase("angle_rad");
-  }
+  // The same for the keys of several bodies and other shapes.
+  const auto erase_circle_keys = [](nlohmann::json& body) {
+    if (body["shape"] != "circle") return;
+    body.erase("shape");
+    body.erase("half_size_m");
+    body.erase("angle_rad");
+  };
+  erase_circle_keys(writer.object["body"]);
+  for (auto& body : writer.object["bodies"]) erase_circle_keys(body);
+  if (scenario.bodies.empty()) writer.object.erase("bodies");
   return std::move(writer.object);
 }
 

@@ -9,6 +9,7 @@
 ///   Real   a finite double (also each coordinate of a Point2 / Segment2 / corner array)
 ///   Int    an integer        Flag  true/false        Choice  one of a few names
 ///   Name   a scenario name   Fields  a nested struct  List<R>  an array of R-items
+/// A std::optional member with Fields is an object that may be left out.
 #include <array>
 #include <concepts>
 #include <cstddef>
@@ -70,6 +71,9 @@ inline constexpr std::array<std::string_view, 5> kOutputFieldNames{"vx", "vy", "
 /// In the order of fsi::BodyShape.
 inline constexpr std::array<std::string_view, 3> kBodyShapeNames{"circle", "ellipse", "rounded_rectangle"};
 
+/// Bodies in one scene.
+inline constexpr std::size_t kMaxBodies = 8;
+
 /// Coordinates and lengths: a generous box around any lab-scale set-up, and far from
 /// the range where squaring a coordinate could overflow.
 inline constexpr Real kCoordinate{-1.0e3, 1.0e3, false, false, "m"};
@@ -122,6 +126,7 @@ void visit_fields(V& v, S& b) {
   v("half_size_m", b.half_size_m, Real{0.0, 1.0e3, true, false, "m"});
   v("angle_rad", b.angle_rad, Real{-1.0e3, 1.0e3, false, false, "rad"});
   v("initial_velocity_mps", b.initial_velocity_mps, Real{-1.0e3, 1.0e3, false, false, "m/s"});
+  v("solid", b.solid, Fields{});  // optional: absent, the scenario's solid
 }
 
 template <class V, Like<FluidSpec> S>
@@ -202,6 +207,7 @@ void visit_fields(V& v, S& s) {
   v("mesh", s.mesh, Fields{});
   v("walls", s.walls, List<Real>{0, 1000, kCoordinate});
   v("body", s.body, Fields{});
+  v("bodies", s.bodies, List<Fields>{0, kMaxBodies, {}});
   v("fluid", s.fluid, Fields{});
   v("solid", s.solid, Fields{});
   v("gravity_mps2", s.gravity_mps2, Real{-1.0e3, 1.0e3, false, false, "m/s^2"});

@@ -65,6 +65,10 @@ class RuleChecker {
     for (std::size_t i = 0; i < items.size(); ++i) check_member(at / i, items[i], rule.item);
   }
   template <class T>
+  static void check_member(const KeyPath& at, const std::optional<T>& member, const Fields& rule) {
+    if (member) check_member(at, *member, rule);
+  }
+  template <class T>
   static void check_member(const KeyPath& at, const T& member, const Fields&) {
     RuleChecker nested(at);
     visit_fields(nested, member);
@@ -86,19 +90,6 @@ void check_numerics(const NumericsSpec& n, const KeyPath& at) {
   }
 }
 
-// Longer steps inside the contact force's reach could let one step carry the body deep
-// into it (the force is explicit in a step): a body comes down to k before the zone, and
-// goes on there only with what time_step_wall_zone_doublings allows (at most
-// time_step_max_doublings: NumericsSpec::time_step_wall_zone_max_s).
-void check_time_step_zone(const Scenario& s, const KeyPath& root) {
-  const NumericsSpec& n = s.numerics;
-  if (n.time_step_max_doublings == 0) return;
-  if (s.contact.gamma_c > 0.0 && n.time_step_wall_zone_m < s.contact.dist0_m)
-    fail(root / "numerics" / "time_step_wall_zone_m",
-         "must be at least contact.dist0_m = " + number_text(s.contact.dist0_m) +
-             " m when time_step_max_doublings > 0 (bodies come down to time_step_s before the contact force acts), got " +
-             number_text(n.time_step_wall_zone_m));
-}
 
 void check_contact(const ContactSpec& c, const KeyPath& at) {
   if (c.gamma_c > 0.0 && !(c.dist0_m > 0.0)) {
@@ -128,7 +119,6 @@ void validate(const Scenario& scenario) {
   io::check_body_and_walls(scenario, root);
   io::check_numerics(scenario.numerics, root / "numerics");
   io::check_contact(scenario.contact, root / "contact");
-  io::check_time_step_zone(scenario, root);
   io::check_output(scenario.output, root / "output");
 }
 

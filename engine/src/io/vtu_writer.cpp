@@ -123,6 +123,14 @@ void write_vtu(const std::filesystem::path& file, const FieldView& view) {
       o += view.triangle_phase[i] == Phase::solid ? '1' : '0';
     }
   });
+  // The body of each solid cell (0 = body1, ...; -1 fluid): one filter in ParaView picks a body.
+  if (view.triangle_body.size() == view.triangles.size())
+    data_array(out, "Int32", "body_id", 1, [&](std::string& o) {
+      for (std::size_t i = 0; i < view.triangle_body.size(); ++i) {
+        if (i > 0) o += ' ';
+        o += std::to_string(view.triangle_body[i]);
+      }
+    });
   out += "      </CellData>\n";
 
   points(out, view.nodes);

@@ -40,6 +40,9 @@ struct FrameSpec {
   bool keep_aspect = true;
   bool show_mesh = false;      ///< thin grey sub-element edges
   bool show_interface = true;  ///< thick black interface contour
+  /// Several bodies: each body's contour in a colour of its own (body1 black, body2
+  /// magenta, body3 green, body4 orange, then again); false: all black.
+  bool colour_bodies = true;
   bool show_walls = true;      ///< thick dark grey walls
   bool show_colorbar = true;
   bool show_axes = true;  ///< ticks and labels in metres on the frame
