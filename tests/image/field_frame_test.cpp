@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <filesystem>
 #include <fsi/colormap.hpp>
+#include <fsi/engine.hpp>
 #include <fsi/renderer.hpp>
 #include <fsi/sample_field.hpp>
 
@@ -116,6 +118,16 @@ TEST_F(FieldFrame, EachBodyInItsOwnColourGolden) {
   s.colour_bodies = false;
   const Image plain = renderer.render(v, s);
   EXPECT_FALSE(has_pixel(plain, magenta));
+}
+
+TEST_F(FieldFrame, EngineSceneOfTwoBodiesGolden) {
+  // The engine's own view of assets/scenarios/bodies/two_balls_collide.json at t = 0: two
+  // balls flying at each other in their potential flows, body2's contour in magenta.
+  const fsi::Engine engine(
+      fsi::load_scenario(std::filesystem::path(FSI_SOURCE_DIR) / "assets/scenarios/bodies/two_balls_collide.json"));
+  FrameSpec s = small_frame(Quantity::vx);
+  s.range = ColorRange{-0.4, 0.4};
+  testing::expect_matches_golden("engine_two_bodies", renderer.render(engine.view(), s));
 }
 
 TEST_F(FieldFrame, FilmWindowSpansTheGapUnderTheBody) {

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <string>
 
@@ -173,6 +175,16 @@ TEST(Bodies, FunctionalsOfEachBody) {
   ASSERT_EQ(v.triangle_body.size(), v.triangles.size());
   for (std::size_t t = 0; t < v.triangles.size(); ++t)
     EXPECT_EQ(v.triangle_body[t] >= 0, v.triangle_phase[t] == fsi::Phase::solid);
+  // VTU frames carry the body of each cell.
+  const std::filesystem::path vtu = std::filesystem::path(FSI_BINARY_DIR) / "test_tmp" / "two_bodies.vtu";
+  std::filesystem::create_directories(vtu.parent_path());
+  fsi::io::write_vtu(vtu, v);
+  std::ifstream in(vtu);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.find("Name=\"body_id\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::string values = text.substr(text.find('>', at) + 1, 200);
+  EXPECT_NE(values.find("-1"), std::string::npos);  // fluid cells
 }
 
 TEST(Bodies, TwoBodiesThatTouchAreDetected) {
