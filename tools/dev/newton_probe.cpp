@@ -1,6 +1,6 @@
 // fsi-newton-probe: what Newton faces in the next step of a checkpointed state.
 //
-//   fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--start interpolated|repair|solid]
+//   fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--start interpolated|repair|solid]
 //
 // Builds the step the engine would take next (the geometry from u, T_m and the old
 // values, Newton's start) and reports: how the start was made (nodes re-interpolated,
@@ -40,6 +40,8 @@ const char* kFieldName[] = {"v_x", "v_y", "u_x", "u_y", "p"};
 struct Options {
   std::string scenario, checkpoint;
   int iterations = 8;
+  double k_s = 0.0;  ///< the step's length (0: the scenario's time_step_s)
+  double cut_snap = -1.0;  ///< the next geometry's cut_snap (negative: the scenario's)
   core::StartMode start = core::StartMode::repair_unphysical;
 };
 
@@ -52,6 +54,12 @@ Options parse(int argc, char** argv) {
       o.iterations = std::atoi(argv[++i]);
       if (o.iterations < 0 || o.iterations > 200)
         throw std::invalid_argument("fsi-newton-probe: --iterations must be an integer in [0, 200]");
+    } else if (a == "--k" && i + 1 < argc) {
+      o.k_s = std::atof(argv[++i]);
+      if (!(o.k_s > 0.0 && o.k_s <= 1.0)) throw std::invalid_argument("fsi-newton-probe: --k must be a step length in (0, 1] s");
+    } else if (a == "--cut-snap" && i + 1 < argc) {
+      o.cut_snap = std::atof(argv[++i]);
+      if (!(o.cut_snap >= 0.0 && o.cut_snap <= 0.25)) throw std::invalid_argument("fsi-newton-probe: --cut-snap must be in [0, 0.25]");
     } else if (a == "--start" && i + 1 < argc) {
       const std::string m = argv[++i];
       if (m == "interpolated") o.start = core::StartMode::interpolated;
@@ -65,7 +73,7 @@ Options parse(int argc, char** argv) {
     }
   }
   if (positional.size() != 2)
-    throw std::invalid_argument("usage: fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--start interpolated|repair|solid]");
+    throw std::invalid_argument("usage: fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--start interpolated|repair|solid]");
   o.scenario = positional[0];
   o.checkpoint = positional[1];
   return o;
@@ -93,16 +101,21 @@ int run(const Options& o) {
   const mesh::PatchMesh mesh = mesh::build_patch_mesh(scenario.mesh, scenario.walls);
   const fe::PatchBuckets buckets(mesh);
   const NumericsSpec& n = scenario.numerics;
-  const fe::CutOptions cut_options{n.cut_snap, n.cut_snap_distance_m};
+  const fe::CutOptions cut_options{o.cut_snap >= 0.0 ? o.cut_snap : n.cut_snap, n.cut_snap_distance_m};
 
   // The step as Engine::step() builds it (engine.cpp: after_state_change, attempt).
   const fe::CutMesh current = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut});
   const fe::CutMesh previous =
       fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut});
+  // The body as the state refers its displacement to (re-referencing moved and turned it).
+  BodySpec body = scenario.body;
+  body.center_m.x += state.reference_offset_x_m;
+  body.center_m.y += state.reference_offset_y_m;
+  body.angle_rad += state.reference_rotation_rad;
   const fe::CutMesh next = fe::build_cut_mesh(
-      mesh, fe::cut_data(mesh, interface::ips_level_set(scenario.body, current, buckets, state.solution), cut_options));
+      mesh, fe::cut_data(mesh, interface::ips_level_set(body, current, buckets, state.solution), cut_options));
   const fe::QuadratureTable quad = fe::build_quadrature(next);
-  const double k = n.time_step_s;
+  const double k = o.k_s > 0.0 ? o.k_s : n.time_step_s;
   core::FsiSystem system(scenario, mesh);
   system.set_geometry(next, quad, k);
   interface::MappingOptions mo;
@@ -112,7 +125,7 @@ int run(const Options& o) {
   mo.identity_gap_m = n.identity_gap_m;
   std::vector<forms::OldValues> old;
   interface::compute_old_values(mesh, buckets, next, quad, {&current, &state.solution},
-                                {&previous, &state.previous_solution}, scene_bodies(scenario), scenario.walls, mo, old);
+                                {&previous, &state.previous_solution}, std::span<const BodySpec>(&body, 1), scenario.walls, mo, old);
   system.set_old_values(std::move(old));
 
   core::InitialGuessStats guess;
