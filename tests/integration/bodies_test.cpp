@@ -70,6 +70,29 @@ TEST(Bodies, ThreeBallsStartWithEachMassErrorUnderOnePercent) {
   EXPECT_LT(b[1].mean_vy_mps, -0.1);  // thrown down
 }
 
+TEST(Bodies, AnEllipseAndARoundedRectangleShareAScene) {
+  fsi::Scenario s = shipped("bodies/two_balls_collide.json");
+  s.bodies[0].shape = fsi::BodyShape::ellipse;
+  s.bodies[0].half_size_m = {0.25, 0.15};
+  s.bodies[0].angle_rad = 0.3;
+  s.bodies[1].shape = fsi::BodyShape::rounded_rectangle;
+  s.bodies[1].half_size_m = {0.2, 0.15};
+  s.bodies[1].radius_m = 0.08;
+  s.bodies[1].solid = fsi::SolidSpec{2000.0, 8e5, 3.2e6};
+  fsi::Engine engine(s);
+  for (int i = 0; i < 8; ++i) {
+    const fsi::StepReport r = engine.step();
+    ASSERT_TRUE(r.accepted && r.converged) << "step " << i << ": " << r.message;
+  }
+  const auto& b = engine.state().functionals.bodies;
+  ASSERT_EQ(b.size(), 2u);
+  // Each against its own shape's area (pi a b; 4 a b - (4 - pi) r^2).
+  EXPECT_LT(b[0].mass_error, 0.02);
+  EXPECT_LT(b[1].mass_error, 0.02);
+  EXPECT_GT(b[0].mean_vx_mps, 0.1);  // still flying at each other
+  EXPECT_LT(b[1].mean_vx_mps, -0.1);
+}
+
 TEST(Bodies, RestoredStateContinuesBitIdentically) {
   const fsi::Scenario s = shipped("bodies/two_balls_collide.json");
   fsi::Engine straight(s), first(s);

@@ -1,6 +1,6 @@
 // fsi-newton-probe: what Newton faces in the next step of a checkpointed state.
 //
-//   fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--start interpolated|repair|solid]
+//   fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--cut-snap-distance M] [--start interpolated|repair|solid]
 //
 // Builds the step the engine would take next (the geometry from u, T_m and the old
 // values, Newton's start) and reports: how the start was made (nodes re-interpolated,
@@ -42,6 +42,7 @@ struct Options {
   int iterations = 8;
   double k_s = 0.0;  ///< the step's length (0: the scenario's time_step_s)
   double cut_snap = -1.0;  ///< the next geometry's cut_snap (negative: the scenario's)
+  double cut_snap_distance_m = -1.0;  ///< and its cut_snap_distance_m
   core::StartMode start = core::StartMode::repair_unphysical;
 };
 
@@ -60,6 +61,10 @@ Options parse(int argc, char** argv) {
     } else if (a == "--cut-snap" && i + 1 < argc) {
       o.cut_snap = std::atof(argv[++i]);
       if (!(o.cut_snap >= 0.0 && o.cut_snap <= 0.25)) throw std::invalid_argument("fsi-newton-probe: --cut-snap must be in [0, 0.25]");
+    } else if (a == "--cut-snap-distance" && i + 1 < argc) {
+      o.cut_snap_distance_m = std::atof(argv[++i]);
+      if (!(o.cut_snap_distance_m >= 0.0 && o.cut_snap_distance_m <= 0.1))
+        throw std::invalid_argument("fsi-newton-probe: --cut-snap-distance must be in [0, 0.1] m");
     } else if (a == "--start" && i + 1 < argc) {
       const std::string m = argv[++i];
       if (m == "interpolated") o.start = core::StartMode::interpolated;
@@ -73,7 +78,7 @@ Options parse(int argc, char** argv) {
     }
   }
   if (positional.size() != 2)
-    throw std::invalid_argument("usage: fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--start interpolated|repair|solid]");
+    throw std::invalid_argument("usage: fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--cut-snap-distance M] [--start interpolated|repair|solid]");
   o.scenario = positional[0];
   o.checkpoint = positional[1];
   return o;
@@ -101,7 +106,8 @@ int run(const Options& o) {
   const mesh::PatchMesh mesh = mesh::build_patch_mesh(scenario.mesh, scenario.walls);
   const fe::PatchBuckets buckets(mesh);
   const NumericsSpec& n = scenario.numerics;
-  const fe::CutOptions cut_options{o.cut_snap >= 0.0 ? o.cut_snap : n.cut_snap, n.cut_snap_distance_m};
+  const fe::CutOptions cut_options{o.cut_snap >= 0.0 ? o.cut_snap : n.cut_snap,
+                                   o.cut_snap_distance_m >= 0.0 ? o.cut_snap_distance_m : n.cut_snap_distance_m};
 
   // The step as Engine::step() builds it (engine.cpp: after_state_change, attempt).
   const fe::CutMesh current = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut});
