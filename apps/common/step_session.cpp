@@ -167,6 +167,12 @@ std::optional<nlohmann::ordered_json> StepSession::handle(const std::string& lin
       const State& s = engine_.state();
       j["reference_offset_m"] = {s.reference_offset_x_m, s.reference_offset_y_m};
       j["reference_rotation_rad"] = s.reference_rotation_rad;
+      if (!s.body_references.empty()) {  // several bodies: each one's, body1 first
+        nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+        for (const State::BodyReference& b : s.body_references)
+          bodies.push_back({{"reference_offset_m", {b.offset_x_m, b.offset_y_m}}, {"reference_rotation_rad", b.rotation_rad}});
+        j["bodies"] = std::move(bodies);
+      }
       return j;
     }
     if (c == "scenario") {
