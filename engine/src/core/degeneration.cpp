@@ -62,8 +62,10 @@ std::optional<Degeneration> merged_bodies(const fe::CutMesh& cut, const std::vec
     for (int a = 0; a < e.vertices; ++a) {
       int& nb = node_body[e.node[a]];
       if (nb >= 0 && nb != b) {
-        char text[200];
-        std::snprintf(text, sizeof text, "body%d and body%d touch: their solids share a mesh node (real contact between bodies)",
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "body%d and body%d touch: their solids share a mesh node (real contact between bodies); "
+                      "a contact force (contact.gamma_c > 0, contact.dist0_m about two patch sides) keeps bodies apart",
                       std::min(nb, b) + 1, std::max(nb, b) + 1);
         const mesh::Vec2& x = cut.x[e.node[a]];
         return Degeneration{text, {x.x(), x.y()}};
