@@ -106,6 +106,13 @@ TEST(Bodies, OverlappingOrTooManyBodiesAreRefused) {
     EXPECT_NE(std::string(e.what()).find("/bodies"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("0 to 8 entries"), std::string::npos) << e.what();
   }
+  try {
+    fsi::parse_scenario(R"({"body": {"radius_m": 0.3}, "bodies": [{"center_m": [0.0, 0.0], "radius_m": 0.2}]})",
+                        "both.json");
+    FAIL() << "body and bodies together were accepted";
+  } catch (const fsi::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("either body"), std::string::npos) << e.what();
+  }
   // A body of its own material is checked like the scenario's.
   try {
     fsi::parse_scenario(R"({"bodies": [{"center_m": [0.0, 0.0], "radius_m": 0.2, "solid": {"mu_pa": -1}}]})",

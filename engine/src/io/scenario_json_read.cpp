@@ -304,6 +304,9 @@ Scenario parse_scenario(const std::string& json_text, const std::string& origin)
   Scenario scenario = example1_scenario(io::read_method(root, at));
   scenario.source = origin;
   io::convert_renamed_keys(root, at, scenario.numerics.time_step_s);
+  // One body or a list of them: the list would silently replace the one.
+  if (root.is_object() && root.contains("body") && root.contains("bodies"))
+    io::fail(at / "body", "give either body (one body) or bodies (a list), not both");
   io::read(root, at, scenario, io::Fields{});
   validate(scenario);
   return scenario;

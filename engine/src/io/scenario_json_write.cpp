@@ -89,6 +89,8 @@ class JsonWriter {
 std::string to_json(const Scenario& scenario) {
   io::JsonWriter<nlohmann::ordered_json> writer;
   io::visit_fields(writer, scenario);
+  // The form the scene uses: one body or the list (a file gives one of them).
+  writer.object.erase(scenario.bodies.empty() ? "bodies" : "body");
   // Names are checked to be ASCII by validate(); `replace` keeps an unvalidated
   // scenario with broken UTF-8 printable instead of throwing.
   return writer.object.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
