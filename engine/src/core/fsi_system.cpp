@@ -6,6 +6,7 @@
 #include <span>
 
 #include "core/contact_distance.hpp"
+#include "core/functionals.hpp"
 #include "core/initial_guess.hpp"
 #include "core/parallel_chunks.hpp"
 #include "forms/fluid_element_jacobian.hpp"
@@ -206,47 +207,33 @@ void FsiSystem::build_contact_forces() {
   closest_bodies_ = {-1, -1};
   const std::size_t num_bodies = body_material_.size();
   contact_force_per_body_n_per_m_.assign(num_bodies, mesh::Vec2::Zero());
-  // The body of every interface segment: that of its patch's solid sub-elements.
-  std::vector<int> segment_body(cut.interface.size(), 0);
-  if (num_bodies > 1 && element_body_.size() == cut.elements.size())
-    for (std::size_t i = 0; i < cut.interface.size(); ++i)
-      for (int k = cut.first_element[cut.interface[i].patch]; k < cut.first_element[cut.interface[i].patch + 1]; ++k)
-        if (element_body_[k] >= 0) {
-          segment_body[i] = element_body_[k];
-          break;
-        }
-  // The gap between each two bodies, and the distance of a point to the other bodies.
-  const auto distance_to_other_bodies = [&](const mesh::Vec2& x, int body) {
-    double d = std::numeric_limits<double>::infinity();
+  const std::vector<int> segment_body =
+      num_bodies > 1 ? segment_bodies(cut, element_body_) : std::vector<int>(cut.interface.size(), 0);
+  // The distance of a point of `body`'s interface to the other bodies' interfaces, and
+  // the body it is to.
+  struct Gap {
+    double distance_m = std::numeric_limits<double>::infinity();
+    int body = -1;
+  };
+  const auto gap_to_other_bodies = [&](const mesh::Vec2& x, int body) {
+    Gap gap;
     for (std::size_t i = 0; i < cut.interface.size(); ++i) {
       if (segment_body[i] == body) continue;
       const fe::InterfaceSegment& seg = cut.interface[i];
-      d = std::min(d, mesh::distance_to_segment(Segment2{{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}}, x));
+      const double d = mesh::distance_to_segment(Segment2{{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}}, x);
+      if (d < gap.distance_m) gap = {d, segment_body[i]};
     }
-    return d;
+    return gap;
   };
   if (num_bodies > 1)
     for (std::size_t i = 0; i < cut.interface.size(); ++i)
       for (const mesh::Vec2& x : {cut.interface[i].a, cut.interface[i].b}) {
-        const double d = distance_to_other_bodies(x, segment_body[i]);
-        if (d < min_body_gap_m_) {
-          min_body_gap_m_ = d;
-          closest_bodies_[0] = segment_body[i];
+        const Gap gap = gap_to_other_bodies(x, segment_body[i]);
+        if (gap.distance_m < min_body_gap_m_) {
+          min_body_gap_m_ = gap.distance_m;
+          closest_bodies_ = {segment_body[i], gap.body};
         }
       }
-  if (closest_bodies_[0] >= 0) {  // the body on the other side of that gap
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < cut.interface.size(); ++i) {
-      if (segment_body[i] == closest_bodies_[0]) continue;
-      for (const mesh::Vec2& x : {cut.interface[i].a, cut.interface[i].b}) {
-        const double d = distance_to_other_bodies(x, segment_body[i]);
-        if (d < best) {
-          best = d;
-          closest_bodies_[1] = segment_body[i];
-        }
-      }
-    }
-  }
   const double gamma_c = scenario_.contact.gamma_c, dist0 = scenario_.contact.dist0_m;
   if (!(gamma_c > 0.0 && dist0 > 0.0)) return;
   // Tread edges push like a flat wall tangent to the body (contact_distance.hpp): one
@@ -295,7 +282,7 @@ void FsiSystem::build_contact_forces() {
     for (double s : {0.5 - g, 0.5 + g}) {
       const mesh::Vec2 x = seg.a + s * d;
       double dist = distance(x);
-      if (bodies_near) dist = std::min(dist, distance_to_other_bodies(x, segment_body[i]));
+      if (bodies_near) dist = std::min(dist, gap_to_other_bodies(x, segment_body[i]).distance_m);
       if (dist >= dist0) continue;
       const double pc = gamma_c * (dist0 - dist) / std::max(dist, scenario_.contact.min_dist_fraction * dist0);
       max_contact_pressure_ = std::max(max_contact_pressure_, pc);
