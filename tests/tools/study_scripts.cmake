@@ -286,7 +286,7 @@ execute_process(COMMAND env FSI_STUDY_NO_BUILD=1 FSI_MOVIE=${_bodies_stub}
   RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
 file(STRINGS ${_dir}/bodies/summary.csv _rows)
 list(GET _rows 1 _row)
-if(NOT _rc EQUAL 0 OR NOT _row STREQUAL "two_balls_collide,1.5000,4,0,0.026,0.35,0.005,1,0,1e-09")
+if(NOT _rc EQUAL 0 OR NOT _row STREQUAL "two_balls_collide,1.5000,4,0,0.026,0.35,0.005,2,0,1e-09")
   message(FATAL_ERROR "study-bodies: exit ${_rc}, summary row '${_row}'\n${_out}${_err}")
 endif()
 if(NOT _out MATCHES "two_balls_collide: enter dist_0 at 0.1988 m/s each, stop 0.026 m apart against 0.02645 m from the force law's energy balance \\(within 20 %\\), fly apart, every step converged, mirror error 1e-09 m: yes")
