@@ -436,6 +436,8 @@ def envelope_problems(scenario):
         if not lo * (1 - 1e-3) <= value <= hi * (1 + 1e-3):
             problems.append("%s = %g%s is outside [%g, %g]" % (name, value, unit, lo, hi))
 
+    if scenario.get("bodies"):
+        problems.append("%d bodies: the envelope has one body" % len(scenario["bodies"]))
     if scenario.get("method", "fsi") != "fsi":
         problems.append('method "%s": the envelope is that of the default numerics ("fsi")'
                         % scenario.get("method"))

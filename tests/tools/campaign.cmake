@@ -97,12 +97,16 @@ foreach(_i 000 001 002)
   endif()
 endforeach()
 
-# --- --check: the drawn scenarios lie inside the envelope, the shipped stairs do not -----
+# --- --check: the drawn scenarios lie inside the envelope, the shipped stairs and three balls do not
 run_campaign(0 --check ${_dir}/a/scenarios/case_000.json ${_dir}/a/scenarios/case_001.json
              ${_dir}/a/scenarios/case_002.json ${SOURCE_DIR}/assets/scenarios/ball_drop.json)
 run_campaign(1 --check ${SOURCE_DIR}/assets/scenarios/stairs/stairs_rho100.json)
 if(NOT _out MATCHES "rho_s / rho_f = 10 is outside")
   message(FATAL_ERROR "--check does not name the density ratio: ${_out}")
+endif()
+run_campaign(1 --check ${SOURCE_DIR}/assets/scenarios/three_balls.json)
+if(NOT _out MATCHES "3 bodies: the envelope has one body")
+  message(FATAL_ERROR "--check does not name the bodies: ${_out}")
 endif()
 
 # --- the outcomes, with a stub engine --------------------------------------------------
