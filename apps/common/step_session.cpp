@@ -212,6 +212,8 @@ nlohmann::ordered_json StepSession::step(long n) {
   j["unconverged_steps"] = unconverged_;
   j["last_message"] = last.message;
   j["last_report"] = report_json(last);
+  // Where the body (each body) is now: the functionals of the state after the steps.
+  j["functionals"] = functionals_json(engine_.state().functionals);
   if (!last.accepted) j["rejected"] = true;  // the state did not advance; change numerics first
   return j;
 }

@@ -21,7 +21,7 @@ endif()
 set(_expect
   "ok|commands"                                  # help
   "ok|t,step,functionals"                        # functionals
-  "ok|t,step,converged_steps,unconverged_steps,last_message,last_report"  # step 3
+  "ok|t,step,converged_steps,unconverged_steps,last_message,last_report,functionals"  # step 3
   "ok|numerics" "ok|numerics" "ok|numerics"      # set x3
   "ok|numerics"                                  # numerics
   "ok|converged_steps"                           # step
@@ -152,5 +152,13 @@ if(NOT _strict_rc EQUAL 3 OR NOT _strict_count EQUAL 2 OR NOT _strict_out MATCHE
    OR NOT _strict_err MATCHES "exit-on-error")
   message(FATAL_ERROR "--exit-on-error should stop after the failed load with exit code 3 "
                       "(got ${_strict_rc}, ${_strict_count} answers):\n${_strict_out}\n${_strict_err}")
+endif()
+# A scene of two bodies: the step's answer carries each body's functionals.
+file(WRITE ${_out}/bodies.txt "step 1\nquit\n")
+execute_process(COMMAND ${STEP} ${SOURCE_DIR}/assets/scenarios/bodies/two_balls_collide.json
+  INPUT_FILE ${_out}/bodies.txt OUTPUT_VARIABLE _bodies_out ERROR_VARIABLE _bodies_err
+  RESULT_VARIABLE _bodies_rc TIMEOUT 60)
+if(NOT _bodies_rc EQUAL 0 OR NOT _bodies_out MATCHES "\"bodies\":\\[\\{\"centroid_x_m\":-0\\.4[0-9]*,\"centroid_y_m\"[^]]*\\},\\{\"centroid_x_m\":0\\.4")
+  message(FATAL_ERROR "fsi-step's step answer on two bodies has no bodies' functionals (exit ${_bodies_rc}):\n${_bodies_out}\n${_bodies_err}")
 endif()
 message("fsi-step script: ${_answers} answers as expected")
