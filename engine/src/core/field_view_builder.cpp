@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "core/functionals.hpp"
+#include "interface/body.hpp"
 
 namespace fsi::core {
 
@@ -43,7 +43,7 @@ FieldView build_field_view(const mesh::PatchMesh& mesh, const fe::CutMesh& cut, 
   }
   for (const auto& [a, b] : edges) v.mesh_edges.push_back({a, b});
   for (const fe::InterfaceSegment& s : cut.interface) v.interface.push_back({{s.a.x(), s.a.y()}, {s.b.x(), s.b.y()}});
-  v.interface_body = segment_bodies(cut, element_body);
+  v.interface_body = interface::segment_bodies(cut, element_body);
   v.walls = scenario.walls;
   v.domain_min = {mesh.min.x(), mesh.min.y()};
   v.domain_max = {mesh.max.x(), mesh.max.y()};

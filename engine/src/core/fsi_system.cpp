@@ -6,7 +6,6 @@
 #include <span>
 
 #include "core/contact_distance.hpp"
-#include "core/functionals.hpp"
 #include "core/initial_guess.hpp"
 #include "core/parallel_chunks.hpp"
 #include "forms/fluid_element_jacobian.hpp"
@@ -208,7 +207,7 @@ void FsiSystem::build_contact_forces() {
   const std::size_t num_bodies = body_material_.size();
   contact_force_per_body_n_per_m_.assign(num_bodies, mesh::Vec2::Zero());
   const std::vector<int> segment_body =
-      num_bodies > 1 ? segment_bodies(cut, element_body_) : std::vector<int>(cut.interface.size(), 0);
+      num_bodies > 1 ? interface::segment_bodies(cut, element_body_) : std::vector<int>(cut.interface.size(), 0);
   // The distance of a point of `body`'s interface to the other bodies' interfaces, and
   // the body it is to.
   struct Gap {

@@ -13,18 +13,6 @@
 
 namespace fsi::core {
 
-std::vector<int> segment_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body) {
-  std::vector<int> body(cut.interface.size(), 0);
-  if (element_body.size() != cut.elements.size()) return body;
-  for (std::size_t i = 0; i < cut.interface.size(); ++i)
-    for (int k = cut.first_element[cut.interface[i].patch]; k < cut.first_element[cut.interface[i].patch + 1]; ++k)
-      if (element_body[k] >= 0) {
-        body[i] = element_body[k];
-        break;
-      }
-  return body;
-}
-
 namespace {
 
 /// The solid's velocity and J = det(I - grad u) at a quadrature point of element e.
@@ -55,7 +43,7 @@ std::vector<Functionals::Body> body_functionals(const Scenario& scenario, const 
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<Functionals::Body> out(bodies.size());
   for (Functionals::Body& b : out) b.min_distance_m = b.min_body_distance_m = inf;
-  const std::vector<int> seg_body = segment_bodies(geometry, geometry_body);
+  const std::vector<int> seg_body = interface::segment_bodies(geometry, geometry_body);
   for (std::size_t i = 0; i < geometry.interface.size(); ++i) {
     Functionals::Body& b = out[static_cast<std::size_t>(seg_body[i])];
     for (const mesh::Vec2& x : {geometry.interface[i].a, geometry.interface[i].b}) {

@@ -25,8 +25,5 @@ Functionals compute_functionals(const Scenario& scenario, const fe::CutMesh& geo
                                 const std::vector<int>& geometry_body = {}, const std::vector<int>& cut_body = {},
                                 const std::vector<State::BodyReference>& body_references = {});
 
-/// The body of each interface segment of `cut` (that of its patch's solid sub-elements;
-/// 0 where element_body is empty).
-std::vector<int> segment_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body);
 
 }  // namespace fsi::core

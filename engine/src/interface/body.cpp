@@ -152,6 +152,18 @@ std::vector<int> element_bodies(std::span<const BodySpec> bodies, const fe::CutM
   return body;
 }
 
+std::vector<int> segment_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body) {
+  std::vector<int> body(cut.interface.size(), 0);
+  if (element_body.size() != cut.elements.size()) return body;
+  for (std::size_t i = 0; i < cut.interface.size(); ++i)
+    for (int k = cut.first_element[cut.interface[i].patch]; k < cut.first_element[cut.interface[i].patch + 1]; ++k)
+      if (element_body[k] >= 0) {
+        body[i] = element_body[k];
+        break;
+      }
+  return body;
+}
+
 }  // namespace fsi::interface
 
 namespace fsi {

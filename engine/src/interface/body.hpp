@@ -71,4 +71,8 @@ inline fe::LevelSet ips_level_set(const BodySpec& body, const fe::CutMesh& cut, 
 std::vector<int> element_bodies(std::span<const BodySpec> bodies, const fe::CutMesh& next, const fe::CutMesh& cut,
                                 const fe::PatchBuckets& buckets, const Eigen::VectorXd& solution);
 
+/// The body of each interface segment of `cut`: that of its patch's solid sub-elements
+/// (element_body: element_bodies of `cut`; empty or of another size: body 0 everywhere).
+std::vector<int> segment_bodies(const fe::CutMesh& cut, const std::vector<int>& element_body);
+
 }  // namespace fsi::interface

@@ -49,13 +49,11 @@ MappingStats compute_old_values(const mesh::PatchMesh& mesh, const fe::PatchBuck
   std::vector<std::vector<Segment2>> body_segments;
   if (bodies.size() > 1 && options.element_body != nullptr && options.element_body->size() == next.elements.size()) {
     body_segments.resize(bodies.size());
-    for (const fe::InterfaceSegment& seg : next.interface)
-      for (int k = next.first_element[seg.patch]; k < next.first_element[seg.patch + 1]; ++k) {
-        const int b = (*options.element_body)[k];
-        if (b < 0) continue;
-        body_segments[static_cast<std::size_t>(b)].push_back({{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}});
-        break;
-      }
+    const std::vector<int> segment_body = segment_bodies(next, *options.element_body);
+    for (std::size_t i = 0; i < next.interface.size(); ++i) {
+      const fe::InterfaceSegment& seg = next.interface[i];
+      body_segments[static_cast<std::size_t>(segment_body[i])].push_back({{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}});
+    }
   }
   const auto between_bodies = [&](const Vec2& x, double gap) {
     int near = 0;
