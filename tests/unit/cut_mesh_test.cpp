@@ -285,3 +285,78 @@ TEST(CutMesh, ACutBesideAWallNodeInsideTheBodyGoesThroughIt) {
   const auto lifted = fsi::fe::cut_data(mesh, [&](const Vec2& x) { return phi(x) + 2e-9; }, options);
   EXPECT_EQ(lifted.corner_sign[contact_node], 1);
 }
+
+namespace {
+
+/// The largest interior angle over all sub-elements [degrees].
+double largest_angle_deg(const CutMesh& cut) {
+  double worst = 0.0;
+  for (const auto& e : cut.elements) worst = std::max(worst, fsi::fe::element_angle_range(cut, e)[1]);
+  return worst * 180.0 / std::numbers::pi;
+}
+
+}  // namespace
+
+TEST(CutMesh, AlignedCutsOnTheLongSidesOfAFlatPatchKeepItsAnglesBounded) {
+  // A wall row like Example 1's and the campaign's: 8 cm x 3.125 mm. A body's bottom cuts
+  // off the corner (0, 0): the long side at 0.45 L, the short side at half its height.
+  constexpr double kL = 0.08, kH = 0.003125;
+  const auto mesh = fsi::test::block_mesh(1, 1, kL, kH);
+  auto phi = [](const Vec2& x) { return x.x() / (0.45 * kL) + x.y() / (0.5 * kH) - 1.0; };
+  const CutMesh plain = fsi::fe::build_cut_mesh(mesh, phi, fsi::fe::CutOptions{1e-6, 0.0, 0.0});
+  ASSERT_EQ(plain.kind[0], PatchKind::A);
+  EXPECT_GT(largest_angle_deg(plain), 150.0) << "the fan of a flat patch";
+  const CutMesh aligned = fsi::fe::build_cut_mesh(mesh, phi, fsi::fe::CutOptions{1e-6, 0.0, 0.1});
+  ASSERT_EQ(aligned.kind[0], PatchKind::A);
+  EXPECT_LT(largest_angle_deg(aligned), 95.0);
+  EXPECT_NEAR(total_area(aligned), kL * kH, 1e-18);
+  // The cut moved to the long side's midpoint; the interface there is within 0.1 kH of
+  // the level set's zero (the short side's cut did not move).
+  ASSERT_EQ(aligned.interface.size(), 1u);
+  for (const Vec2& p : {aligned.interface[0].a, aligned.interface[0].b}) {
+    const bool on_long_side = p.y() == 0.0;
+    if (on_long_side) EXPECT_DOUBLE_EQ(p.x(), 0.5 * kL);
+    else EXPECT_NEAR(phi(p), 0.0, 1e-12);
+  }
+}
+
+TEST(CutMesh, ASteepCutOnALongSideStaysWhereItIs) {
+  // The same row crossed upright at 0.3 L: moving that cut to the midpoint would move the
+  // interface by 0.2 L = 1.6 cm, far more than 0.1 x the short side.
+  constexpr double kL = 0.08, kH = 0.003125;
+  const auto mesh = fsi::test::block_mesh(1, 1, kL, kH);
+  auto phi = [](const Vec2& x) { return x.x() - 0.3 * kL; };
+  const CutMesh cut = fsi::fe::build_cut_mesh(mesh, phi, fsi::fe::CutOptions{1e-6, 0.0, 0.1});
+  ASSERT_EQ(cut.kind[0], PatchKind::B);
+  for (const auto& s : cut.interface) {
+    EXPECT_NEAR(phi(s.a), 0.0, 1e-15);
+    EXPECT_NEAR(phi(s.b), 0.0, 1e-15);
+  }
+  EXPECT_LT(largest_angle_deg(cut), 95.0);
+}
+
+TEST(CutMesh, AFlatFanMovesItsCentreOnlyWithTheAlignmentOn) {
+  // The wall row again, its corner (0, 0) cut off at t L on the long side and at half the
+  // short side. The chapter's centre (alignment off) lies halfway between the interface's
+  // midpoint and the opposite corner; with the alignment on, a fan with an angle above
+  // 150 degrees may take a centre across from a cut, never a worse one.
+  constexpr double kL = 0.08, kH = 0.003125;
+  const auto mesh = fsi::test::block_mesh(1, 1, kL, kH);
+  const auto& node = mesh.patches[0].node;
+  int moved = 0;
+  for (double t : {0.15, 0.3, 0.45, 0.6, 0.8}) {
+    auto phi = [t](const Vec2& x) { return x.x() / (t * kL) + x.y() / (0.5 * kH) - 1.0; };
+    const CutMesh chapter = fsi::fe::build_cut_mesh(mesh, phi, fsi::fe::CutOptions{1e-6, 0.0, 0.0});
+    ASSERT_EQ(chapter.kind[0], PatchKind::A) << "t = " << t;
+    const Vec2 centre = 0.5 * (0.5 * (chapter.x[node[1]] + chapter.x[node[3]]) + chapter.x[node[8]]);
+    EXPECT_NEAR((chapter.x[node[4]] - centre).norm(), 0.0, 1e-15) << "t = " << t;
+    const CutMesh ours = fsi::fe::build_cut_mesh(mesh, phi, fsi::fe::CutOptions{1e-6, 0.0, 0.1});
+    EXPECT_LE(largest_angle_deg(ours), largest_angle_deg(chapter) + 1e-9) << "t = " << t;
+    EXPECT_NEAR(total_area(ours), kL * kH, 1e-18);
+    // Where the cuts stayed (the alignment moves t = 0.45 to the midpoint), the centre
+    // alone can have moved.
+    if (ours.x[node[1]] == chapter.x[node[1]] && ours.x[node[3]] == chapter.x[node[3]])
+      moved += (ours.x[node[4]] - chapter.x[node[4]]).norm() > 0.0;
+  }
+  EXPECT_GT(moved, 0) << "no fan took another centre";
+}

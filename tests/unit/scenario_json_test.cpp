@@ -473,6 +473,7 @@ TEST(ScenarioMethod, ChapterIsTheChaptersNumerics) {
   EXPECT_EQ(n.cavitation_pressure_pa, 0.0);
   EXPECT_EQ(n.backflow_beta, 0.0);
   EXPECT_EQ(n.rereference_angle_rad, 0.0);
+  EXPECT_EQ(n.cut_align_fraction, 0.0);
   EXPECT_EQ(n.failure_policy, fsi::FailurePolicy::accept_and_flag);
   EXPECT_EQ(n.time_step_max_s(), 0.0);
   EXPECT_EQ(n.time_step_wall_zone_max_s(), 0.0);
@@ -487,6 +488,7 @@ TEST(ScenarioMethod, ChapterIsTheChaptersNumerics) {
   same.cavitation_pressure_pa = 0.0;
   same.backflow_beta = 0.0;
   same.rereference_angle_rad = 0.0;
+  same.cut_align_fraction = 0.0;
   same.failure_policy = fsi::FailurePolicy::accept_and_flag;
   fsi::Scenario expected = fsi::example1_scenario(fsi::Method::chapter);
   expected.numerics = same;

@@ -1,6 +1,6 @@
 // fsi-newton-probe: what Newton faces in the next step of a checkpointed state.
 //
-//   fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--cut-snap-distance M] [--start interpolated|repair|solid]
+//   fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--cut-snap-distance M] [--cut-align F] [--start interpolated|repair|solid]
 //
 // Builds the step the engine would take next (the geometry from u, T_m and the old
 // values, Newton's start) and reports: how the start was made (nodes re-interpolated,
@@ -43,6 +43,7 @@ struct Options {
   double k_s = 0.0;  ///< the step's length (0: the scenario's time_step_s)
   double cut_snap = -1.0;  ///< the next geometry's cut_snap (negative: the scenario's)
   double cut_snap_distance_m = -1.0;  ///< and its cut_snap_distance_m
+  double cut_align_fraction = -1.0;   ///< and its cut_align_fraction
   core::StartMode start = core::StartMode::repair_unphysical;
 };
 
@@ -65,6 +66,10 @@ Options parse(int argc, char** argv) {
       o.cut_snap_distance_m = std::atof(argv[++i]);
       if (!(o.cut_snap_distance_m >= 0.0 && o.cut_snap_distance_m <= 0.1))
         throw std::invalid_argument("fsi-newton-probe: --cut-snap-distance must be in [0, 0.1] m");
+    } else if (a == "--cut-align" && i + 1 < argc) {
+      o.cut_align_fraction = std::atof(argv[++i]);
+      if (!(o.cut_align_fraction >= 0.0 && o.cut_align_fraction <= 0.5))
+        throw std::invalid_argument("fsi-newton-probe: --cut-align must be in [0, 0.5]");
     } else if (a == "--start" && i + 1 < argc) {
       const std::string m = argv[++i];
       if (m == "interpolated") o.start = core::StartMode::interpolated;
@@ -78,7 +83,7 @@ Options parse(int argc, char** argv) {
     }
   }
   if (positional.size() != 2)
-    throw std::invalid_argument("usage: fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--cut-snap-distance M] [--start interpolated|repair|solid]");
+    throw std::invalid_argument("usage: fsi-newton-probe SCENARIO.json CHECKPOINT [--iterations N] [--k SECONDS] [--cut-snap S] [--cut-snap-distance M] [--cut-align F] [--start interpolated|repair|solid]");
   o.scenario = positional[0];
   o.checkpoint = positional[1];
   return o;
@@ -107,19 +112,22 @@ int run(const Options& o) {
   const fe::PatchBuckets buckets(mesh);
   const NumericsSpec& n = scenario.numerics;
   const fe::CutOptions cut_options{o.cut_snap >= 0.0 ? o.cut_snap : n.cut_snap,
-                                   o.cut_snap_distance_m >= 0.0 ? o.cut_snap_distance_m : n.cut_snap_distance_m};
+                                   o.cut_snap_distance_m >= 0.0 ? o.cut_snap_distance_m : n.cut_snap_distance_m,
+                                   o.cut_align_fraction >= 0.0 ? o.cut_align_fraction : n.cut_align_fraction};
 
   // The step as Engine::step() builds it (engine.cpp: after_state_change, attempt).
-  const fe::CutMesh current = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut});
+  // The saved levels as the run built them (its own options), the next with the probe's.
+  const fe::CutOptions saved_options{n.cut_snap, n.cut_snap_distance_m, n.cut_align_fraction};
+  const fe::CutMesh current = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut}, saved_options);
   const fe::CutMesh previous =
-      fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut});
+      fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut}, saved_options);
   // The body as the state refers its displacement to (re-referencing moved and turned it).
   BodySpec body = scenario.body;
   body.center_m.x += state.reference_offset_x_m;
   body.center_m.y += state.reference_offset_y_m;
   body.angle_rad += state.reference_rotation_rad;
   const fe::CutMesh next = fe::build_cut_mesh(
-      mesh, fe::cut_data(mesh, interface::ips_level_set(body, current, buckets, state.solution), cut_options));
+      mesh, fe::cut_data(mesh, interface::ips_level_set(body, current, buckets, state.solution), cut_options), cut_options);
   const fe::QuadratureTable quad = fe::build_quadrature(next);
   const double k = o.k_s > 0.0 ? o.k_s : n.time_step_s;
   core::FsiSystem system(scenario, mesh);
@@ -141,11 +149,41 @@ int run(const Options& o) {
   std::printf("start: %d nodes re-interpolated, %d continued from the solid field\n", guess.moved_nodes,
               guess.extrapolated_nodes);
   const core::SolidDeterminant start_det = core::solid_determinant(next, quad, x);
+  // The solid sub-elements an iterate inverts: their nodes on both meshes.
+  const auto print_inverted = [&](const Eigen::VectorXd& x) {
+  for (int e = 0; e < next.num_elements(); ++e) {
+    const fe::SubElement& el = next.elements[e];
+    if (el.phase != Phase::solid) continue;
+    double worst = 1e300;
+    for (int q = quad.first[e]; q < quad.first[e + 1]; ++q)
+      worst = std::min(worst, core::deformation_determinant(el, quad.points[q], x));
+    if (worst > 0.0) continue;
+    const auto angles = fe::element_angle_range(next, el);
+    std::printf("inverted element %d (patch %d, kind %d): det >= %.3f, angles %.1f-%.1f deg, area %.3g m^2\n", e, el.patch,
+                static_cast<int>(next.kind[el.patch]), worst, angles[0] * 180 / 3.14159265, angles[1] * 180 / 3.14159265,
+                fe::element_area(next, el));
+    std::printf("  patch nodes (grid order):");
+    for (int nd : mesh.patches[el.patch].node)
+      std::printf(" %d (%.5f, %.5f) was (%.5f, %.5f) s %d;", nd, next.x[nd].x(), next.x[nd].y(), current.x[nd].x(),
+                  current.x[nd].y(), int(next.corner_sign[nd]));
+    std::printf("\n");
+    for (int i = 0; i < el.vertices; ++i) {
+      const int nd = el.node[i];
+      std::printf("  node %d at (%.6f, %.6f) was (%.6f, %.6f) wall %d sign %d->%d solid %d->%d u (%.4e, %.4e) was (%.4e, %.4e)\n", nd,
+                  next.x[nd].x(), next.x[nd].y(), current.x[nd].x(), current.x[nd].y(), int(mesh.on_wall[nd]),
+                  int(current.corner_sign[nd]), int(next.corner_sign[nd]), int(current.touches_solid[nd]),
+                  int(next.touches_solid[nd]), x[kFieldsPerNode * nd + kUx], x[kFieldsPerNode * nd + kUy],
+                  state.solution[kFieldsPerNode * nd + kUx], state.solution[kFieldsPerNode * nd + kUy]);
+    }
+  }
+  };
+  print_inverted(x);
   std::printf("det(I - grad u) at the start: smallest %.4f at (%.5f, %.5f) m; %d solid points <= 0\n",
               start_det.smallest, start_det.where.x(), start_det.where.y(), start_det.non_positive);
 
   solve::SparseMatrix jacobian = system.pattern();
   Eigen::VectorXd r, r_try;
+  bool inverted_shown = false;  // the first iterate that inverts what the start did not
   for (int it = 0; it <= o.iterations; ++it) {
     system.residual_and_jacobian(x, r, jacobian);
     const Eigen::VectorXd scale = row_scale(jacobian);
@@ -196,6 +234,10 @@ int run(const Options& o) {
     const core::SolidDeterminant det = core::solid_determinant(next, quad, x);
     std::printf(", step x %g -> %.4g; det(I - grad u) >= %.3f (%d <= 0)\n", lambda, trial, det.smallest,
                 det.non_positive);
+    if (det.non_positive > 0 && !(start_det.non_positive > 0) && !inverted_shown) {
+      print_inverted(x);
+      inverted_shown = true;
+    }
   }
   return 0;
 }

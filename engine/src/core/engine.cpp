@@ -62,7 +62,8 @@ struct Engine::Impl {
   fe::QuadratureTable quad_cur;
 
   fe::CutOptions cut_options() const {
-    return fe::CutOptions{scenario.numerics.cut_snap, scenario.numerics.cut_snap_distance_m};
+    return fe::CutOptions{scenario.numerics.cut_snap, scenario.numerics.cut_snap_distance_m,
+                          scenario.numerics.cut_align_fraction};
   }
 
   /// The initial bodies as the state `s` refers its displacement to (core/rereference.hpp).
@@ -150,7 +151,7 @@ struct Engine::Impl {
     const fe::CutData data0 = fe::cut_data(mesh, [bodies](const mesh::Vec2& x) {
       return interface::scene_distance(bodies, x);
     }, cut_options());
-    cut_cur = fe::build_cut_mesh(mesh, data0);
+    cut_cur = fe::build_cut_mesh(mesh, data0, cut_options());
     cut_prev = cut_cur;
     state = State{};
     state.time_step_s = scenario.numerics.time_step_s;
@@ -177,8 +178,8 @@ struct Engine::Impl {
   /// Rebuilds everything derived from the state: meshes of level m and m-1, the next
   /// geometry and the functionals.
   void rebuild_from_state() {
-    cut_cur = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut});
-    cut_prev = fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut});
+    cut_cur = fe::build_cut_mesh(mesh, fe::CutData{state.corner_sign, state.edge_cut}, cut_options());
+    cut_prev = fe::build_cut_mesh(mesh, fe::CutData{state.previous_corner_sign, state.previous_edge_cut}, cut_options());
     body_cur = interface::element_bodies(reference_bodies(state), cut_cur, cut_prev, buckets, state.previous_solution);
     after_state_change();
   }
@@ -198,11 +199,11 @@ struct Engine::Impl {
     const std::shared_ptr<const FactorizationOrigin> origin = state.factorization_origin;
     if (!origin) return;
     const State& s0 = origin->step_start;
-    const fe::CutMesh cur = fe::build_cut_mesh(mesh, fe::CutData{s0.corner_sign, s0.edge_cut});
-    const fe::CutMesh prev = fe::build_cut_mesh(mesh, fe::CutData{s0.previous_corner_sign, s0.previous_edge_cut});
+    const fe::CutMesh cur = fe::build_cut_mesh(mesh, fe::CutData{s0.corner_sign, s0.edge_cut}, cut_options());
+    const fe::CutMesh prev = fe::build_cut_mesh(mesh, fe::CutData{s0.previous_corner_sign, s0.previous_edge_cut}, cut_options());
     const std::vector<BodySpec> bodies = reference_bodies(s0);
     const fe::CutMesh next = fe::build_cut_mesh(
-        mesh, fe::cut_data(mesh, interface::ips_level_set(bodies, cur, buckets, s0.solution), cut_options()));
+        mesh, fe::cut_data(mesh, interface::ips_level_set(bodies, cur, buckets, s0.solution), cut_options()), cut_options());
     const fe::QuadratureTable quad = fe::build_quadrature(next);
     const std::vector<int> next_body = interface::element_bodies(bodies, next, cur, buckets, s0.solution);
     system.set_element_bodies(next_body);
@@ -244,7 +245,7 @@ struct Engine::Impl {
   void next_geometry() {
     const std::vector<BodySpec> bodies = reference_bodies(state);
     data_next = fe::cut_data(mesh, interface::ips_level_set(bodies, cut_cur, buckets, state.solution), cut_options());
-    cut_next = fe::build_cut_mesh(mesh, data_next);
+    cut_next = fe::build_cut_mesh(mesh, data_next, cut_options());
     body_next = interface::element_bodies(bodies, cut_next, cut_cur, buckets, state.solution);
     state.functionals = core::compute_functionals(scenario, cut_next, cut_cur, quad_cur, state.solution,
                                                     state.reference_rotation_rad, body_next, body_cur,
@@ -282,7 +283,7 @@ struct Engine::Impl {
     const fe::CutData data = fe::cut_data(
         mesh, interface::ips_level_set(src_bodies, src.cut_prev, src.buckets, src.state.previous_solution),
         cut_options());
-    const fe::CutMesh cut = fe::build_cut_mesh(mesh, data);
+    const fe::CutMesh cut = fe::build_cut_mesh(mesh, data, cut_options());
     State s;
     s.time_s = src.state.time_s;
     s.step = src.state.step;
@@ -433,7 +434,7 @@ struct Engine::Impl {
     Outcome o;
     const std::vector<BodySpec> bodies = reference_bodies(state);
     o.data_next = fe::cut_data(mesh, interface::ips_level_set(bodies, cut_next, buckets, x), cut_options());
-    o.cut_next = fe::build_cut_mesh(mesh, o.data_next);
+    o.cut_next = fe::build_cut_mesh(mesh, o.data_next, cut_options());
     o.body_next = interface::element_bodies(bodies, o.cut_next, cut_next, buckets, x);
     o.functionals = core::compute_functionals(scenario, o.cut_next, cut_next, quad, x, state.reference_rotation_rad,
                                               o.body_next, body_next, state.body_references);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace fsi::fe {
@@ -94,6 +95,13 @@ class PatchBuilder {
       triangle(b, c, d, phase);
     }
   }
+  /// The largest angle of the type A fan around the centre (canonical ring 1-2-5-8-7-6-3-1).
+  double fan_max_angle() const {
+    constexpr std::array<int, 8> ring{1, 2, 5, 8, 7, 6, 3, 1};
+    double worst = 0.0;
+    for (int i = 0; i < 7; ++i) worst = std::max(worst, max_angle(pos(4), pos(ring[i]), pos(ring[i + 1])));
+    return worst;
+  }
   void interface(int a, int b) {
     out_.interface.push_back(InterfaceSegment{pos(a), pos(b), id_, {node(a), node(b)}});
   }
@@ -137,6 +145,93 @@ void add_interface_on_sides(const PatchMesh& mesh, CutMesh& cut) {
       cut.interface.push_back(InterfaceSegment{cut.x[c0], cut.x[mid], p, {c0, mid}});
       cut.interface.push_back(InterfaceSegment{cut.x[mid], cut.x[c1], p, {mid, c1}});
     }
+  }
+}
+
+/// Per grid edge: the shortest side of the patches beside it that runs across it (the
+/// patch's thickness seen from this edge) [m].
+std::vector<double> edge_thickness(const PatchMesh& mesh) {
+  std::vector<double> thickness(mesh.edges.size(), std::numeric_limits<double>::infinity());
+  for (const Patch& patch : mesh.patches)
+    for (int s = 0; s < 4; ++s) {
+      double across = std::numeric_limits<double>::infinity();
+      for (int q : {(s + 1) % 4, (s + 3) % 4})
+        across = std::min(across, (mesh.nodes[patch.node[kSideCorners[q][1]]] - mesh.nodes[patch.node[kSideCorners[q][0]]]).norm());
+      double& t = thickness[static_cast<std::size_t>(patch.edge[s])];
+      t = std::min(t, across);
+    }
+  return thickness;
+}
+
+/// CutOptions::align_fraction. In a flat patch (sides L x H, L >= kFlatAspect H) a
+/// sub-element with two vertices on one long side and the third on the other has an angle
+/// of up to 180 - 2 atan(2 H / L) degrees unless the third lies across from one of the
+/// two: a cut on a long side anywhere but across from the opposite side's nodes (its ends
+/// and midpoint) leaves such triangles in every configuration (the type A fan of a ball's
+/// bottom in a 3.1 mm x 6.3 cm floor row: 174.5 degrees, det(I - grad u) of -4 from an
+/// interpolated start and no Newton convergence at any step length). The cut moves to
+/// the end or midpoint of its side that moves the interface least, measured across the
+/// interface's direction in the patches on both sides, if that is at most `fraction` x H.
+/// Where the interface crosses the long side at a shallow angle (the bottom of a body
+/// near a wall) a move of centimetres along the side moves it by a fraction of a
+/// millimetre; where it crosses steeply, nothing moves. Never onto a wall node in the
+/// fluid (real contact; see the snapping above).
+void align_long_side_cuts(const PatchMesh& mesh, double fraction, CutData& data) {
+  const std::vector<double> thickness = edge_thickness(mesh);
+  std::vector<std::array<int, 2>> beside(mesh.edges.size(), {-1, -1});  // the patches of an edge
+  for (int p = 0; p < mesh.num_patches(); ++p)
+    for (int e : mesh.patches[p].edge) beside[static_cast<std::size_t>(e)][beside[static_cast<std::size_t>(e)][0] < 0 ? 0 : 1] = p;
+  const auto is_cut = [&](int e) {
+    const mesh::GridEdge& g = mesh.edges[e];
+    return data.edge_cut[e] >= 0.0 && data.corner_sign[g.a] * data.corner_sign[g.b] < 0;
+  };
+  const auto cut_point = [&](int e) {
+    const mesh::GridEdge& g = mesh.edges[e];
+    return Vec2(mesh.nodes[g.a] + data.edge_cut[e] * (mesh.nodes[g.b] - mesh.nodes[g.a]));
+  };
+  for (int e = 0; e < static_cast<int>(mesh.edges.size()); ++e) {
+    if (!is_cut(e)) continue;
+    const mesh::GridEdge& g = mesh.edges[e];
+    const Vec2 a = mesh.nodes[g.a], b = mesh.nodes[g.b];
+    const double h = thickness[static_cast<std::size_t>(e)];
+    if (!((b - a).norm() >= kFlatAspect * h)) continue;
+    // The interface's direction in each patch beside the edge: towards that patch's other
+    // interface point (its other cut side, or a corner on the interface).
+    const Vec2 at = cut_point(e);
+    std::vector<Vec2> direction;
+    bool unclear = false;
+    for (int p : beside[static_cast<std::size_t>(e)]) {
+      if (p < 0) continue;
+      std::vector<Vec2> other;
+      for (int f : mesh.patches[p].edge)
+        if (f != e && is_cut(f)) other.push_back(cut_point(f));
+      for (int k : kCornerLocal) {
+        const int n = mesh.patches[p].node[k];
+        if (data.corner_sign[n] == 0 && n != g.a && n != g.b) other.push_back(mesh.nodes[n]);
+      }
+      if (other.size() != 1 || (other[0] - at).norm() == 0.0) unclear = true;
+      else direction.push_back((other[0] - at).normalized());
+    }
+    if (unclear || direction.empty()) continue;
+    // How far moving the cut to x moves the interface: across its direction, the larger
+    // of the two patches.
+    const auto shift = [&](const Vec2& x) {
+      double worst = 0.0;
+      for (const Vec2& d : direction) worst = std::max(worst, std::abs(d.x() * (x - at).y() - d.y() * (x - at).x()));
+      return worst;
+    };
+    // 0: corner a, 1: midpoint, 2: corner b.
+    const std::array<double, 3> moved{shift(a), shift(0.5 * (a + b)), shift(b)};
+    int best = -1;
+    for (int k = 0; k < 3; ++k) {
+      if (moved[k] > fraction * h) continue;
+      const int corner = k == 0 ? g.a : (k == 2 ? g.b : -1);
+      if (corner >= 0 && mesh.on_wall[corner] && data.corner_sign[corner] > 0) continue;
+      if (best < 0 || moved[k] < moved[best]) best = k;
+    }
+    if (best == 1) data.edge_cut[e] = 0.5;
+    else if (best == 0) data.corner_sign[g.a] = 0;
+    else if (best == 2) data.corner_sign[g.b] = 0;
   }
 }
 
@@ -188,6 +283,7 @@ CutData cut_data(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& o
       else data.corner_sign[g.b] = 0;
     }
   }
+  if (options.align_fraction > 0.0) align_long_side_cuts(mesh, options.align_fraction, data);
   for (int e = 0; e < n_edges; ++e) {
     const mesh::GridEdge& g = mesh.edges[e];
     if (data.corner_sign[g.a] * data.corner_sign[g.b] >= 0) data.edge_cut[e] = -1.0;
@@ -195,7 +291,7 @@ CutData cut_data(const PatchMesh& mesh, const LevelSet& phi, const CutOptions& o
   return data;
 }
 
-CutMesh build_cut_mesh(const PatchMesh& mesh, const CutData& data) {
+CutMesh build_cut_mesh(const PatchMesh& mesh, const CutData& data, const CutOptions& options) {
   CutMesh cut;
   cut.x = mesh.nodes;
   cut.corner_sign = data.corner_sign;
@@ -281,6 +377,23 @@ CutMesh build_cut_mesh(const PatchMesh& mesh, const CutData& data) {
         // midpoint and the opposite corner: inside the convex remainder, away from
         // the interface, so the fan's angles stay bounded.
         b.set_centre(0.5 * (0.5 * (b.pos(1) + b.pos(3)) + b.pos(8)));
+        // In a flat patch that centre can leave the fan with angles up to 175 degrees.
+        // With CutOptions::align_fraction on, a fan worse than kFanAngleLimit takes the
+        // better of two centres across from a cut, halfway to the opposite side's
+        // midpoint: with the cut aligned to its side's midpoint the fan's angles are then
+        // right angles and less.
+        if (options.align_fraction > 0.0 && b.fan_max_angle() > kFanAngleLimit) {
+          Vec2 best = b.pos(4);
+          double best_angle = b.fan_max_angle();
+          for (const Vec2& c : {Vec2(0.5 * (b.pos(1) + b.pos(7))), Vec2(0.5 * (b.pos(3) + b.pos(5)))}) {
+            b.set_centre(c);
+            if (b.fan_max_angle() < best_angle) {
+              best_angle = b.fan_max_angle();
+              best = c;
+            }
+          }
+          b.set_centre(best);
+        }
         const Phase inner = phase_of(sgn(r)), outer = phase_of(sgn(r + 2));
         b.triangle(0, 1, 3, inner);
         const std::array<int, 8> ring{1, 2, 5, 8, 7, 6, 3, 1};

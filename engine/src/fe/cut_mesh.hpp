@@ -53,7 +53,17 @@ struct CutOptions {
   double snap = 1e-6;
   /// Cuts closer than this distance [m] to a corner go through it as well (0: off).
   double snap_distance_m = 0.0;
+  /// Flat patches (a side at least kFlatAspect times the patch's other side): a cut on a
+  /// long side moves to the side's end or midpoint if that moves the interface by at most
+  /// align_fraction x the short side (0: off; docs/solver.md, "Cut snapping and thin rows").
+  double align_fraction = 0.0;
 };
+
+/// Long side / short side from which a patch counts as flat for CutOptions::align_fraction.
+inline constexpr double kFlatAspect = 8.0;
+/// With CutOptions::align_fraction on, a type A fan whose largest angle exceeds this
+/// [rad] (150 degrees) tries the centres across from its cuts.
+inline constexpr double kFanAngleLimit = 150.0 * 3.14159265358979323846 / 180.0;
 
 struct CutMesh {
   std::vector<Vec2> x;                  ///< node positions [m] (moved in cut patches)
@@ -80,13 +90,14 @@ struct CutData {
 /// (with global snapping to corners).
 CutData cut_data(const mesh::PatchMesh& mesh, const LevelSet& phi, const CutOptions& options = {});
 
-/// Builds the sub-elements from the compact description.
-CutMesh build_cut_mesh(const mesh::PatchMesh& mesh, const CutData& data);
+/// Builds the sub-elements from the compact description (`options`: the centre of a
+/// type A patch's fan, see CutOptions::align_fraction; the same options as cut_data's).
+CutMesh build_cut_mesh(const mesh::PatchMesh& mesh, const CutData& data, const CutOptions& options = {});
 
 /// Both steps: cuts `mesh` by the level set `phi`.
 inline CutMesh build_cut_mesh(const mesh::PatchMesh& mesh, const LevelSet& phi,
                               const CutOptions& options = {}) {
-  return build_cut_mesh(mesh, cut_data(mesh, phi, options));
+  return build_cut_mesh(mesh, cut_data(mesh, phi, options), options);
 }
 
 /// Signed area of a sub-element [m^2] (positive when counter-clockwise).

@@ -17,6 +17,7 @@ NumericsSpec numerics_for(Method method) {
     n.cavitation_pressure_pa = 0.0;
     n.backflow_beta = 0.0;
     n.rereference_angle_rad = 0.0;
+    n.cut_align_fraction = 0.0;
     n.failure_policy = FailurePolicy::accept_and_flag;
   }
   return n;

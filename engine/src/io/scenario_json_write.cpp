@@ -129,6 +129,7 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
       {"cip_wall_film_factor", n.cip_wall_film_factor == defaults.cip_wall_film_factor},
       {"cut_snap", n.cut_snap == defaults.cut_snap},
       {"cut_snap_distance_m", n.cut_snap_distance_m == defaults.cut_snap_distance_m},
+      {"cut_align_fraction", n.cut_align_fraction == defaults.cut_align_fraction},
       {"cavitation_pressure_pa", n.cavitation_pressure_pa == defaults.cavitation_pressure_pa},
       {"backflow_beta", n.backflow_beta == defaults.backflow_beta},
       {"accept_flagged_reduction", n.accept_flagged_reduction == defaults.accept_flagged_reduction},

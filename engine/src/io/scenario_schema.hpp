@@ -171,6 +171,7 @@ void visit_fields(V& v, S& n) {
   v("blend_delta_patches", n.blend_delta_patches, Real{0.0, 100.0, true, false, "patches"});
   v("cut_snap", n.cut_snap, Real{0.0, 0.25});
   v("cut_snap_distance_m", n.cut_snap_distance_m, Real{0.0, 0.1, false, false, "m (0: off)"});
+  v("cut_align_fraction", n.cut_align_fraction, Real{0.0, 0.5, false, false, "(0: off)"});
   v("identity_gap_m", n.identity_gap_m, Real{0.0, 1.0e3, false, false, "m (0: one patch)"});
   v("rereference_angle_rad", n.rereference_angle_rad, Real{0.0, 3.2, false, false, "rad (0: never)"});
   v("cavitation_pressure_pa", n.cavitation_pressure_pa,
