@@ -360,3 +360,23 @@ TEST(CutMesh, AFlatFanMovesItsCentreOnlyWithTheAlignmentOn) {
   }
   EXPECT_GT(moved, 0) << "no fan took another centre";
 }
+
+TEST(CutMesh, AContactLineOnAWallMovesTwiceAsFarToItsMidpoint) {
+  // The wall row with the wall along its bottom. A body touches the wall left of x_c =
+  // 0.35 L, and a wedge of fluid opens to the right under it, 0.7 H high at the right side.
+  // Moving the cut on the bottom to the midpoint moves the interface by 0.16 H: more than
+  // 0.1 H, within twice that. On the wall the cut moves; the same cut off the wall stays.
+  constexpr double kL = 0.08, kH = 0.003125, kXc = 0.35 * kL, kSlope = 0.7 * kH / (kL - kXc);
+  auto phi = [](const Vec2& x) { return kSlope * (x.x() - kXc) - x.y(); };
+  const fsi::fe::CutOptions options{1e-6, 0.0, 0.1};
+  const auto on_wall = fsi::test::block_mesh(1, 1, kL, kH, false, {}, 0, {fsi::Segment2{{0.0, 0.0}, {kL, 0.0}}});
+  const auto off_wall = fsi::test::block_mesh(1, 1, kL, kH);
+  ASSERT_TRUE(on_wall.on_wall[on_wall.patches[0].node[0]] && on_wall.on_wall[on_wall.patches[0].node[2]]);
+  auto bottom_cut = [&](const fsi::mesh::PatchMesh& mesh) {
+    const CutMesh cut = fsi::fe::build_cut_mesh(mesh, phi, options);
+    EXPECT_EQ(cut.kind[0], PatchKind::A);
+    return cut.x[mesh.patches[0].node[1]].x();
+  };
+  EXPECT_DOUBLE_EQ(bottom_cut(on_wall), 0.5 * kL);
+  EXPECT_NEAR(bottom_cut(off_wall), kXc, 1e-15);
+}

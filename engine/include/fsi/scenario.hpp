@@ -257,11 +257,12 @@ struct NumericsSpec {
   double cut_snap_distance_m = 0.0;
   /// Flat patches (a side 8 or more times the other, like the 3.1 mm x 2.5-10 cm rows at a
   /// wall): a cut on a long side moves to the side's end or midpoint when the interface
-  /// passes within cut_align_fraction x (short side) of it, and a patch whose fan of
-  /// sub-triangles has an angle above 150 degrees moves its centre across from a cut
-  /// (advanced; ours; 0 = off, the chapter; the default 0.1). Cuts anywhere else on a long
-  /// side leave sub-elements with angles of up to 175 degrees, and a body touching a wall
-  /// there stops converging (docs/solver.md, "Cut snapping and thin rows"). Range [0, 0.5].
+  /// passes within cut_align_fraction x (short side) of it (twice that on a wall), and a
+  /// patch whose fan of sub-triangles has an angle above 150 degrees moves its centre
+  /// across from a cut (advanced; ours; 0 = off, the chapter; the default 0.1). Cuts
+  /// anywhere else on a long side leave sub-elements with angles of up to 175 degrees, and
+  /// a body touching a wall there stops converging (docs/solver.md, "Cut snapping and thin
+  /// rows"). Range [0, 0.5].
   double cut_align_fraction = 0.1;
   /// T_m = id where the body is closer than this to a wall (the chapter's contact gap; advanced).
   double identity_gap_m = 0.0;    ///< 0: one patch height at the wall

@@ -55,7 +55,9 @@ struct CutOptions {
   double snap_distance_m = 0.0;
   /// Flat patches (a side at least kFlatAspect times the patch's other side): a cut on a
   /// long side moves to the side's end or midpoint if that moves the interface by at most
-  /// align_fraction x the short side (0: off; docs/solver.md, "Cut snapping and thin rows").
+  /// align_fraction x the short side (twice that on a wall edge), and a type A fan with an
+  /// angle above kFanAngleLimit may move its centre (0: off; docs/solver.md, "Cut
+  /// snapping and thin rows").
   double align_fraction = 0.0;
 };
 
