@@ -227,7 +227,7 @@ void align_long_side_cuts(const PatchMesh& mesh, double fraction, CutData& data)
     // with 0.1 x the short side it left the aligned midpoint and a fan of 170 degrees
     // turned the solid inside out, campaign seed 4, cases 3 and 7).
     const std::array<double, 3> moved{shift(a), shift(0.5 * (a + b)), shift(b)};
-    const double allowed = (mesh.on_wall[g.a] && mesh.on_wall[g.b] ? 2.0 : 1.0) * fraction * h;
+    const double allowed = (g.wall >= 0 ? 2.0 : 1.0) * fraction * h;
     int best = -1;
     for (int k = 0; k < 3; ++k) {
       if (moved[k] > allowed) continue;

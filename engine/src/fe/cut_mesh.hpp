@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <numbers>
 #include <vector>
 
 #include "fsi/field_view.hpp"
@@ -65,7 +66,7 @@ struct CutOptions {
 inline constexpr double kFlatAspect = 8.0;
 /// With CutOptions::align_fraction on, a type A fan whose largest angle exceeds this
 /// [rad] (150 degrees) tries the centres across from its cuts.
-inline constexpr double kFanAngleLimit = 150.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kFanAngleLimit = 150.0 * std::numbers::pi / 180.0;
 
 struct CutMesh {
   std::vector<Vec2> x;                  ///< node positions [m] (moved in cut patches)
