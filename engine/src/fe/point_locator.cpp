@@ -14,6 +14,8 @@ PatchBuckets::PatchBuckets(const mesh::PatchMesh& mesh) {
   ny_ = std::max(1, static_cast<int>(2 * n * std::sqrt(extent.y() / extent.x())));
   inv_size_ = Vec2(nx_ / extent.x(), ny_ / extent.y());
   buckets_.assign(static_cast<std::size_t>(nx_) * ny_, {});
+  box_lo_.resize(static_cast<std::size_t>(mesh.num_patches()));
+  box_hi_.resize(static_cast<std::size_t>(mesh.num_patches()));
   for (int p = 0; p < mesh.num_patches(); ++p) {
     Vec2 lo = mesh.nodes[mesh.patches[p].node[0]], hi = lo;
     for (int k : mesh.patches[p].node) {
@@ -21,6 +23,8 @@ PatchBuckets::PatchBuckets(const mesh::PatchMesh& mesh) {
       hi = hi.cwiseMax(mesh.nodes[k]);
     }
     const double pad = 1e-9 * (hi - lo).norm();
+    box_lo_[static_cast<std::size_t>(p)] = lo - Vec2(pad, pad);
+    box_hi_[static_cast<std::size_t>(p)] = hi + Vec2(pad, pad);
     const int i0 = std::clamp(static_cast<int>(std::floor((lo.x() - pad - min_.x()) * inv_size_.x())), 0, nx_ - 1);
     const int i1 = std::clamp(static_cast<int>(std::floor((hi.x() + pad - min_.x()) * inv_size_.x())), 0, nx_ - 1);
     const int j0 = std::clamp(static_cast<int>(std::floor((lo.y() - pad - min_.y()) * inv_size_.y())), 0, ny_ - 1);
@@ -58,8 +62,9 @@ Location locate(const CutMesh& cut, const PatchBuckets& buckets, const Vec2& x, 
   Location best;
   best.margin = -1e300;
   double best_xi = 0, best_eta = 0;
-  auto search = [&](const std::vector<int>& patches) {
-    for (int p : patches)
+  auto search = [&](const std::vector<int>& patches, bool only_near) {
+    for (int p : patches) {
+      if (only_near && !buckets.near_patch(p, x)) continue;
       for (int k = cut.first_element[p]; k < cut.first_element[p + 1]; ++k) {
         double xi, eta;
         const SubElement& e = cut.elements[k];
@@ -73,9 +78,21 @@ Location locate(const CutMesh& cut, const PatchBuckets& buckets, const Vec2& x, 
           if (m >= 0.0) return;
         }
       }
+    }
   };
-  search(buckets.candidates(x));
-  if (best.margin < 0.0) search(buckets.nearest_candidates(x));
+  // First only the patches whose box holds x: the first sub-element that contains x is
+  // the one a search of every candidate finds first (it returns at the first such one),
+  // without inverting the maps of the others. On Example 1 at the wall, where a bucket
+  // holds about ten of the thin rows' patches, the inversions took a fifth of a step.
+  // A point no sub-element contains gets the full search below, whose best margin
+  // decides, as before.
+  search(buckets.candidates(x), true);
+  if (best.margin < 0.0) {
+    best = Location{};
+    best.margin = -1e300;
+    search(buckets.candidates(x), false);
+  }
+  if (best.margin < 0.0) search(buckets.nearest_candidates(x), false);
   if (best.element < 0 || best.margin < -tolerance) {
     best.element = -1;
     return best;

@@ -20,12 +20,19 @@ class PatchBuckets {
   const std::vector<int>& candidates(const Vec2& x) const;
   /// The bucket cell nearest to x (for points slightly outside the domain).
   const std::vector<int>& nearest_candidates(const Vec2& x) const;
+  /// Whether x lies in patch p's bounding box, widened by 1e-9 of its diagonal: no
+  /// sub-element of a patch outside it can contain x.
+  bool near_patch(int p, const Vec2& x) const {
+    const std::size_t i = static_cast<std::size_t>(p);
+    return x.x() >= box_lo_[i].x() && x.x() <= box_hi_[i].x() && x.y() >= box_lo_[i].y() && x.y() <= box_hi_[i].y();
+  }
 
  private:
   int cell(const Vec2& x, bool clamp) const;
   Vec2 min_, inv_size_;
   int nx_ = 1, ny_ = 1;
   std::vector<std::vector<int>> buckets_;
+  std::vector<Vec2> box_lo_, box_hi_;  // per patch, widened (near_patch)
   std::vector<int> empty_;
 };
 
