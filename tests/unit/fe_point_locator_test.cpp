@@ -46,6 +46,52 @@ TEST(FePointLocator, FindsPointsAndEvaluatesLinearFunctionsExactly) {
   }
 }
 
+// What locate finds, by searching every candidate patch in the buckets' order: the first
+// sub-element that contains x, else the one with the best margin.
+int first_containing_or_best(const fsi::fe::CutMesh& cut, const fsi::fe::PatchBuckets& buckets, const Vec2& x,
+                             double tolerance) {
+  int best = -1;
+  double best_margin = -1e300;
+  for (const auto* patches : {&buckets.candidates(x), &buckets.nearest_candidates(x)}) {
+    for (int p : *patches)
+      for (int k = cut.first_element[p]; k < cut.first_element[p + 1]; ++k) {
+        double xi, eta;
+        if (!fsi::fe::reference_coordinates(cut, cut.elements[k], x, xi, eta)) continue;
+        const double m = fsi::fe::inside_margin(cut.elements[k], xi, eta);
+        if (m > best_margin) {
+          best_margin = m;
+          best = k;
+          if (m >= 0.0) return best;
+        }
+      }
+  }
+  return best_margin < -tolerance ? -1 : best;
+}
+
+// locate skips the patches whose box does not hold x: it must find the same sub-element
+// as the search of every candidate, for points inside, on edges and nodes, in the thin
+// rows of a graded mesh, and just outside the domain.
+TEST(FePointLocator, FindsTheSubElementASearchOfEveryCandidateFindsFirst) {
+  const auto mesh = fsi::test::graded_square(12);
+  const Vec2 c(0.13, -0.71);
+  const auto cut = fsi::fe::build_cut_mesh(mesh, [c](const Vec2& x) { return (x - c).norm() - 0.3; });
+  const fsi::fe::PatchBuckets buckets(mesh);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0 - 1e-7, 1.0 + 1e-7);
+  std::vector<Vec2> points;
+  for (int k = 0; k < 4000; ++k) points.emplace_back(u(rng), u(rng));
+  for (int k = 0; k < mesh.num_nodes(); ++k) points.push_back(cut.x[k]);
+  for (const auto& s : cut.interface) points.push_back(0.5 * (s.a + s.b));
+  int found = 0;
+  for (const Vec2& x : points)
+    for (double tolerance : {1e-8, 1e-6}) {
+      const auto loc = fsi::fe::locate(cut, buckets, x, tolerance);
+      ASSERT_EQ(loc.element, first_containing_or_best(cut, buckets, x, tolerance)) << x.transpose();
+      found += loc.element >= 0;
+    }
+  EXPECT_GT(found, static_cast<int>(points.size()));
+}
+
 TEST(FePointLocator, RejectsPointsOutsideTheDomain) {
   const auto mesh = fsi::test::block_mesh(4, 4, 1.0, 1.0);
   const auto cut = fsi::fe::build_cut_mesh(mesh, [](const Vec2& x) { return x.x() - 0.37; });
