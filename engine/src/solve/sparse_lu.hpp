@@ -26,9 +26,10 @@ class SparseLU {
   /// The first half of factorize(): takes a copy of `a` and runs the symbolic analysis
   /// if its pattern is new. Returns false if the analysis fails.
   ///
-  /// Not to be run on two threads at once: the METIS ordering inside is not safe for
-  /// that (two SparseLUs analysed concurrently got other orderings, hence other bits,
-  /// than analysed one after the other: SplitLU.TwoThreadsGiveTheSameBitsAsOne).
+  /// Not to be run on two threads at once, nor beside another METIS ordering: the METIS
+  /// ordering inside is not safe for that (two SparseLUs analysed concurrently got other
+  /// orderings, hence other bits, than analysed one after the other). Beside MUMPS's AMF
+  /// analysis it is (SplitLU.TwoThreadsGiveTheSameBitsAsOne).
   bool analyze(const Matrix& a);
   /// The second half: the numeric factorization of the matrix analyze() took. Two
   /// SparseLUs may run this at the same time.
