@@ -10,7 +10,8 @@
 // system's size; 129 for 16641 nodes). --csv writes the chapter's functionals per step
 // (time, min distance, bottom, mean v_y, mass error, step length, iterations) and the
 // step's cost (factorizations, seconds per stage, the step's wall time).
-// --verbose prints every step's report. Exit code 0 when the run reached its end time with every step converged, 1 otherwise.
+// --verbose prints every step's report. Exit code 0 when the run reached its end time
+// with every step converged, 1 otherwise.
 // Run with OPENBLAS_NUM_THREADS=1 (tools/bench sets it).
 #include <sys/resource.h>
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 namespace fsi::fe {
@@ -148,21 +147,6 @@ void add_interface_on_sides(const PatchMesh& mesh, CutMesh& cut) {
   }
 }
 
-/// Per grid edge: the shortest side of the patches beside it that runs across it (the
-/// patch's thickness seen from this edge) [m].
-std::vector<double> edge_thickness(const PatchMesh& mesh) {
-  std::vector<double> thickness(mesh.edges.size(), std::numeric_limits<double>::infinity());
-  for (const Patch& patch : mesh.patches)
-    for (int s = 0; s < 4; ++s) {
-      double across = std::numeric_limits<double>::infinity();
-      for (int q : {(s + 1) % 4, (s + 3) % 4})
-        across = std::min(across, (mesh.nodes[patch.node[kSideCorners[q][1]]] - mesh.nodes[patch.node[kSideCorners[q][0]]]).norm());
-      double& t = thickness[static_cast<std::size_t>(patch.edge[s])];
-      t = std::min(t, across);
-    }
-  return thickness;
-}
-
 /// CutOptions::align_fraction. In a flat patch (sides L x H, L >= kFlatAspect H) a
 /// sub-element with two vertices on one long side and the third on the other has an angle
 /// of up to 180 - 2 atan(2 H / L) degrees unless the third lies across from one of the
@@ -177,10 +161,6 @@ std::vector<double> edge_thickness(const PatchMesh& mesh) {
 /// millimetre; where it crosses steeply, nothing moves. Never onto a wall node in the
 /// fluid (real contact; see the snapping above).
 void align_long_side_cuts(const PatchMesh& mesh, double fraction, CutData& data) {
-  const std::vector<double> thickness = edge_thickness(mesh);
-  std::vector<std::array<int, 2>> beside(mesh.edges.size(), {-1, -1});  // the patches of an edge
-  for (int p = 0; p < mesh.num_patches(); ++p)
-    for (int e : mesh.patches[p].edge) beside[static_cast<std::size_t>(e)][beside[static_cast<std::size_t>(e)][0] < 0 ? 0 : 1] = p;
   const auto is_cut = [&](int e) {
     const mesh::GridEdge& g = mesh.edges[e];
     return data.edge_cut[e] >= 0.0 && data.corner_sign[g.a] * data.corner_sign[g.b] < 0;
@@ -193,14 +173,14 @@ void align_long_side_cuts(const PatchMesh& mesh, double fraction, CutData& data)
     if (!is_cut(e)) continue;
     const mesh::GridEdge& g = mesh.edges[e];
     const Vec2 a = mesh.nodes[g.a], b = mesh.nodes[g.b];
-    const double h = thickness[static_cast<std::size_t>(e)];
+    const double h = g.thickness_m;
     if (!((b - a).norm() >= kFlatAspect * h)) continue;
     // The interface's direction in each patch beside the edge: towards that patch's other
     // interface point (its other cut side, or a corner on the interface).
     const Vec2 at = cut_point(e);
     std::vector<Vec2> direction;
     bool unclear = false;
-    for (int p : beside[static_cast<std::size_t>(e)]) {
+    for (int p : g.patch) {
       if (p < 0) continue;
       std::vector<Vec2> other;
       for (int f : mesh.patches[p].edge)

@@ -139,6 +139,17 @@ PatchMesh build_patch_mesh(const MeshSpec& spec, const std::vector<Segment2>& wa
     }
   }
 
+  for (int p = 0; p < mesh.num_patches(); ++p) {
+    const Patch& patch = mesh.patches[p];
+    for (int s = 0; s < 4; ++s) {
+      GridEdge& e = mesh.edges[static_cast<std::size_t>(patch.edge[s])];
+      e.patch[e.patch[0] < 0 ? 0 : 1] = p;
+      for (int q : {(s + 1) % 4, (s + 3) % 4})
+        e.thickness_m = std::min(e.thickness_m, (mesh.nodes[patch.node[kSideCorners[q][1]]] -
+                                                 mesh.nodes[patch.node[kSideCorners[q][0]]]).norm());
+    }
+  }
+
   mesh.on_wall.assign(mesh.nodes.size(), 0);
   mesh.on_boundary.assign(mesh.nodes.size(), 0);
   for (GridEdge& e : mesh.edges) {

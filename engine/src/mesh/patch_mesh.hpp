@@ -16,6 +16,7 @@
 /// blocks). Their number and the patch connectivity never change; only the positions
 /// of edge-midpoint and centre nodes of cut patches move (fe/cut_mesh.hpp).
 #include <array>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -47,6 +48,11 @@ struct GridEdge {
   int mid = -1;        ///< midpoint node id
   int wall = -1;       ///< boundary edges: index of the wall it lies on, -1 if open
   bool boundary = false;
+  /// The patches beside it (the lower index first; -1: none, on the boundary).
+  std::array<int, 2> patch{-1, -1};
+  /// The shortest side running across it of the patches beside it: how thick they are
+  /// seen from this edge [m] (infinity until build_patch_mesh sets it).
+  double thickness_m = std::numeric_limits<double>::infinity();
 };
 
 struct PatchMesh {
