@@ -8,6 +8,11 @@
 #include <cmath>
 #include <limits>
 
+#include "fe/cut_mesh.hpp"
+#include "fsi/scenario.hpp"
+#include "interface/body.hpp"
+#include "mesh/patch_mesh.hpp"
+
 namespace {
 
 using fsi::core::detect_degeneration;
@@ -70,4 +75,30 @@ TEST(Degeneration, NonFiniteFunctionalsAreABrokenBody) {
   EXPECT_NE(d->cause.find("not finite"), std::string::npos) << d->cause;
 }
 
+TEST(Degeneration, ABodyAtTheOpenBoundaryIsNamedWithItsPlace) {
+  // Example 1's domain: a floor (a wall), open sides and top.
+  const fsi::Scenario s = fsi::example1_scenario();
+  const fsi::mesh::PatchMesh mesh = fsi::mesh::build_patch_mesh(s.mesh, s.walls);
+  const auto at_open_boundary = [&](double x, double y, double r) {
+    fsi::BodySpec b;
+    b.center_m = {x, y};
+    b.radius_m = r;
+    const fsi::BodySpec bodies[] = {b};
+    const fsi::fe::CutMesh cut = fsi::fe::build_cut_mesh(
+        mesh, [&](const Eigen::Vector2d& p) { return fsi::interface::scene_distance(bodies, p); });
+    return fsi::core::body_at_open_boundary(mesh, cut);
+  };
+  EXPECT_FALSE(at_open_boundary(0.0, 0.0, 0.4));           // Example 1's ball
+  EXPECT_FALSE(at_open_boundary(0.0, -1.0 + 0.39, 0.4));   // pressed 1 cm into the floor: a wall
+  const auto left = at_open_boundary(-0.65, -0.3, 0.4);    // 5 cm past the open left side
+  ASSERT_TRUE(left.has_value());
+  EXPECT_DOUBLE_EQ(left->where_m.x, -1.0);
+  EXPECT_NEAR(left->where_m.y, -0.3, 0.195);  // on the chord the ball cuts off x = -1
+  EXPECT_NE(left->cause.find("reached the open boundary"), std::string::npos) << left->cause;
+  const auto top = at_open_boundary(0.3, 0.2, 0.4);        // 10 cm through the open top
+  ASSERT_TRUE(top.has_value());
+  EXPECT_DOUBLE_EQ(top->where_m.y, 0.5);
+}
+
 }  // namespace
+

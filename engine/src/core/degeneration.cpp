@@ -76,6 +76,21 @@ std::optional<Degeneration> merged_bodies(const fe::CutMesh& cut, const std::vec
   return std::nullopt;
 }
 
+std::optional<Degeneration> body_at_open_boundary(const mesh::PatchMesh& mesh, const fe::CutMesh& cut) {
+  const std::size_t nodes = std::min({mesh.on_boundary.size(), mesh.on_wall.size(), cut.touches_solid.size()});
+  for (std::size_t n = 0; n < nodes; ++n) {
+    if (!mesh.on_boundary[n] || mesh.on_wall[n] || !cut.touches_solid[n]) continue;
+    const mesh::Vec2& x = n < cut.x.size() ? cut.x[n] : mesh.nodes[n];
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "the body reached the open boundary at (%.4g, %.4g) m: the domain ends there and a body "
+                  "leaving it cannot be followed (a wall there, or a larger domain, keeps it inside)",
+                  x.x(), x.y());
+    return Degeneration{text, {x.x(), x.y()}, true};
+  }
+  return std::nullopt;
+}
+
 double largest_cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& before, const fe::CutMesh& after) {
   double side_m = 0.0;
   for (int p = 0; p < mesh.num_patches(); ++p) {

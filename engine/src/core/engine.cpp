@@ -445,6 +445,7 @@ struct Engine::Impl {
   std::optional<core::Degeneration> degeneration(const Eigen::VectorXd& x, double k, const fe::QuadratureTable& quad,
                                                  const Outcome& o) const {
     if (std::optional<core::Degeneration> merged = core::merged_bodies(o.cut_next, o.body_next)) return merged;
+    if (std::optional<core::Degeneration> open = core::body_at_open_boundary(mesh, o.cut_next)) return open;
     const core::SolidDeterminant det = core::solid_determinant(cut_next, quad, x);
     return core::detect_degeneration(state.functionals, o.functionals, k,
                                      core::largest_cut_patch_side(mesh, cut_next, o.cut_next), det.non_positive,
@@ -658,14 +659,18 @@ struct Engine::Impl {
     std::optional<core::Degeneration> d = degeneration(x, k, quad, *outcome);
     report.geometry_seconds += seconds_since(t0);
     if (!d) return false;
-    report.converged = false;
+    const bool outside = d->outside_domain;
+    if (!outside) report.converged = false;  // a body that leaves the domain may be solved well
     report.events.push_back({StepEvent::Kind::degenerated, state.time_s + k, d->where_m, -1,
-                             "the solution of a step of " + std::to_string(k) + " s broke the body: " + d->cause});
+                             "the solution of a step of " + std::to_string(k) + " s " +
+                                 (outside ? "takes the body out of the domain: " : "broke the body: ") + d->cause});
     a.broken = std::move(d);
     outcome.reset();
     verdict.candidate = false;
     verdict.flagged_early = false;
-    if (may_halve && a.halvings < scenario.numerics.max_halvings)
+    if (outside)
+      verdict.action = core::AttemptAction::give_up;  // a shorter step only delays it
+    else if (may_halve && a.halvings < scenario.numerics.max_halvings)
       verdict.action = core::AttemptAction::retry_halved;
     else if (may_halve && a.best_x.size() > 0)
       verdict.action = core::AttemptAction::accept_best;
@@ -735,7 +740,10 @@ struct Engine::Impl {
   void give_up(const solve::NewtonResult& r, bool finite, StepReport& report, StepAttempts& a) {
     report.accepted = false;
     std::string why = "rolled back to the state before the step";
-    if (a.broken) {
+    if (a.broken && a.broken->outside_domain) {
+      why = "the step takes the body out of the domain (" + a.broken->cause + "): " + why;
+      a.policy_note = a.broken->cause;
+    } else if (a.broken) {
       std::ostringstream b;
       b << "the step broke the body (" << a.broken->cause << ", at (" << a.broken->where_m.x << ", "
         << a.broken->where_m.y << ") m): " << why;
