@@ -323,6 +323,12 @@ def fmt(x):
     return "" if x is None else "%.6g" % x
 
 
+def left_domain(summary):
+    """Whether the run's body reached an open boundary (the engine's left_domain event)."""
+    events = summary.get("events") or []
+    return any(isinstance(e, dict) and e.get("kind") == "left_domain" for e in events)
+
+
 def result_of(run_dir):
     """The outcome columns of one run (RESULT_COLUMNS)."""
     record = read_record(os.path.join(run_dir, "campaign-run.txt"))
@@ -343,6 +349,8 @@ def result_of(run_dir):
     if timed_out:
         outcome = "stopped"
         reason = "timeout after %s s" % record.get("timeout_s", "?") + (": " + reason if reason else "")
+    elif reported and reason and left_domain(summary):
+        outcome = "left_domain"  # the body reached an open boundary: the domain ends there
     elif rc == 0 and reported:
         outcome = "finished" if not reason else "stopped"
     elif reported and reason:
@@ -369,7 +377,7 @@ def result_of(run_dir):
     return result
 
 
-OUTCOME_CODE = {"finished": 0, "stopped": 1, "crashed": 2, "not_run": 3}
+OUTCOME_CODE = {"finished": 0, "stopped": 1, "crashed": 2, "not_run": 3, "left_domain": 4}
 GEOMETRY_CODE = {g: i for i, g in enumerate(GEOMETRIES)}
 
 

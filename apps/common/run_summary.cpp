@@ -28,6 +28,8 @@ const char* kind_name(StepEvent::Kind k) {
       return "degenerated";
     case StepEvent::Kind::contact_retried:
       return "contact_retried";
+    case StepEvent::Kind::left_domain:
+      return "left_domain";
   }
   return "unknown";
 }
@@ -36,7 +38,7 @@ bool kind_from_name(const std::string& name, StepEvent::Kind& kind) {
   for (StepEvent::Kind k : {StepEvent::Kind::real_contact, StepEvent::Kind::contact_force_active,
                             StepEvent::Kind::step_halved, StepEvent::Kind::rolled_back,
                             StepEvent::Kind::non_finite, StepEvent::Kind::degenerated,
-                            StepEvent::Kind::contact_retried}) {
+                            StepEvent::Kind::contact_retried, StepEvent::Kind::left_domain}) {
     if (name == kind_name(k)) {
       kind = k;
       return true;
@@ -169,7 +171,8 @@ nlohmann::ordered_json RunSummary::to_json(double wall_seconds, bool is_final,
     nlohmann::ordered_json e;
     e["kind"] = kind_name(kind);
     e["first_time_s"] = rec.first.time_s;
-    if (kind == StepEvent::Kind::real_contact || kind == StepEvent::Kind::degenerated)
+    if (kind == StepEvent::Kind::real_contact || kind == StepEvent::Kind::degenerated ||
+        kind == StepEvent::Kind::left_domain)
       e["where_m"] = {rec.first.where_m.x, rec.first.where_m.y};
     if (kind == StepEvent::Kind::real_contact) e["wall"] = rec.first.wall;
     e["steps"] = rec.count;

@@ -52,6 +52,14 @@ TEST(ThrownBall, ThrownOutOfTheDomainStopsWithTheOpenBoundaryNamed) {
   EXPECT_GT(steps, 3);  // it leaves the domain by its own motion, not at the start
   EXPECT_NE(r.message.find("reached the open boundary at (-1,"), std::string::npos) << r.message;
   EXPECT_EQ(r.message.find("broke"), std::string::npos) << r.message;  // the body is sound
+  // The report says so in its events too, for programs (tools/campaign's left_domain).
+  bool left = false, degenerated = false;
+  for (const fsi::StepEvent& e : r.events) {
+    left |= e.kind == fsi::StepEvent::Kind::left_domain;
+    degenerated |= e.kind == fsi::StepEvent::Kind::degenerated;
+  }
+  EXPECT_TRUE(left);
+  EXPECT_FALSE(degenerated);
   // The state kept is the last one inside the domain.
   EXPECT_GT(engine.state().functionals.left_x_m, -1.0);
 }

@@ -111,7 +111,8 @@ endif()
 
 # --- the outcomes, with a stub engine --------------------------------------------------
 # case_000: a finished run; case_001: killed by SIGSEGV; case_002: hangs (--timeout 2);
-# case_003: exits 1 without a summary.
+# case_003: exits 1 without a summary; case_004: stops where its body reaches an open
+# boundary (the engine's left_domain event).
 set(_movie ${_dir}/stub-movie)
 file(WRITE ${_movie} "#!/usr/bin/env bash
 case \"$1\" in
@@ -119,16 +120,22 @@ case \"$1\" in
                   printf 'time_s,mass_error\\n0.004,1e-3\\n0.008,-2e-3\\n' > \"$2/functionals.csv\" ;;
   *case_001.json) echo 'about to fail' >&2; kill -SEGV $$ ;;
   *case_003.json) echo 'fsi-movie: broken' >&2; exit 1 ;;
+  *case_004.json) printf '{\"final\": true, \"stop_reason\": \"the engine rejected step 3: the body reached the open boundary at (-1, -0.5) m\", \"steps\": 2, \"simulated_time_s\": 0.008, \"unconverged_steps\": 0, \"events\": [{\"kind\": \"left_domain\", \"first_time_s\": 0.012, \"where_m\": [-1, -0.5]}]}' > \"$2/summary.json\"
+                  exit 1 ;;
   *) exec sleep 20 ;;
 esac
 ")
 file(CHMOD ${_movie} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
-run_campaign(0 --count 4 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2 --jobs 4)
+run_campaign(0 --count 5 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2 --jobs 5)
 summary_rows(${_dir}/stub _rows)
 list(GET _rows 0 _r0)
 list(GET _rows 1 _r1)
 list(GET _rows 2 _r2)
 list(GET _rows 3 _r3)
+list(GET _rows 4 _r4)
+if(NOT _r4 MATCHES ",left_domain,0\\.008,2,0,.*,\"the engine rejected step 3: the body reached the open boundary at \\(-1, -0\\.5\\) m\"$")
+  message(FATAL_ERROR "case 4 (left the domain): ${_r4}")
+endif()
 if(NOT _r0 MATCHES ",finished,0\\.008,2,0,0\\.1,0\\.002,[0-9.]+,\"\"$")
   message(FATAL_ERROR "case 0 (finished): ${_r0}")
 endif()
@@ -144,7 +151,7 @@ endif()
 # A run is reused while its scenario is unchanged: the engine is not asked again.
 file(READ ${_dir}/stub/summary.csv _first)
 file(WRITE ${_movie} "#!/usr/bin/env bash\necho 'asked again' >&2\nexit 1\n")
-run_campaign(0 --count 4 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2)
+run_campaign(0 --count 5 --seed 7 --end-time 0.012 --mesh-level 0 --out ${_dir}/stub --timeout 2)
 file(READ ${_dir}/stub/summary.csv _again)
 if(NOT _first STREQUAL _again)
   message(FATAL_ERROR "the runs were not reused:\n${_first}\n${_again}")

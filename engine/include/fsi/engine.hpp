@@ -25,8 +25,12 @@ struct StepEvent {
   /// contact_retried: Newton did not converge in real contact, and the step was tried again
   /// at the same length with the wall's hold on the solid turned round (the contact patches
   /// held are released and the released held: core/contact_release.hpp).
+  /// left_domain: the step's solution takes the body onto an open boundary of the domain,
+  /// where the fixed mesh ends (core/degeneration.hpp, body_at_open_boundary); the step is
+  /// rolled back at once, and the run cannot go on. Not a failure of the solver: where_m
+  /// names the boundary point.
   enum class Kind { real_contact, contact_force_active, step_halved, rolled_back, non_finite, degenerated,
-                    contact_retried };
+                    contact_retried, left_domain };
   Kind kind;
   double time_s = 0.0;
   Point2 where_m;          ///< place (contact: the interface point nearest the wall)

@@ -661,7 +661,8 @@ struct Engine::Impl {
     if (!d) return false;
     const bool outside = d->outside_domain;
     if (!outside) report.converged = false;  // a body that leaves the domain may be solved well
-    report.events.push_back({StepEvent::Kind::degenerated, state.time_s + k, d->where_m, -1,
+    report.events.push_back({outside ? StepEvent::Kind::left_domain : StepEvent::Kind::degenerated, state.time_s + k,
+                             d->where_m, -1,
                              "the solution of a step of " + std::to_string(k) + " s " +
                                  (outside ? "takes the body out of the domain: " : "broke the body: ") + d->cause});
     a.broken = std::move(d);
