@@ -57,6 +57,23 @@ TEST(Degeneration, AJumpOfTheMassErrorIsFound) {
   EXPECT_DOUBLE_EQ(d->where_m.y, -0.79);  // the body's centroid
 }
 
+TEST(Degeneration, ASmallBodyInLargePatchesMayChangeItsMassErrorByOnePatch) {
+  // A ball of R = 0.1 m among 5 cm patches: one patch's cut rebuilt changes the discrete
+  // area by up to 0.0025 m^2 of its 0.0314 m^2 (0.08). A campaign ball of R = 0.104 m went
+  // from 0.057 to 0.080 in one converged step; more than a patch is still a broken body.
+  fsi::Functionals before = ball(-0.5, -0.5, 0.057), after = ball(-0.501, -0.5, 0.080);
+  before.solid_area_m2 = after.solid_area_m2 = M_PI * 0.1 * 0.1;
+  constexpr double kPatchArea = 0.05 * 0.05;
+  EXPECT_FALSE(detect_degeneration(before, after, kStep, 0.05, 0, {}, kPatchArea));
+  after.mass_error = 0.2;
+  const auto d = detect_degeneration(before, after, kStep, 0.05, 0, {}, kPatchArea);
+  ASSERT_TRUE(d);
+  EXPECT_NE(d->cause.find("jumped from 0.057 to 0.2 in one step (more than 0.08)"), std::string::npos) << d->cause;
+  // Without the patch's area the bound is the fixed one.
+  after.mass_error = 0.080;
+  EXPECT_TRUE(detect_degeneration(before, after, kStep, 0.05, 0, {}));
+}
+
 TEST(Degeneration, AnInterfaceThatJumpsFurtherThanTheBodyMovesIsFound) {
   fsi::Functionals after = ball(-0.79, 0.0);
   after.bottom_y_m -= 3.0 * kPatch;  // the rim pulled through the floor in one step

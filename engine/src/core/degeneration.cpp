@@ -8,7 +8,7 @@ namespace fsi::core {
 
 std::optional<Degeneration> detect_degeneration(const Functionals& before, const Functionals& after,
                                                 double time_step_s, double patch_side_m, int inverted_points,
-                                                Point2 inverted_where_m) {
+                                                Point2 inverted_where_m, double patch_area_m2) {
   char text[240];
   const Point2 centroid{after.centroid_x_m, after.centroid_y_m};
   const double values[] = {after.bottom_y_m, after.top_y_m, after.left_x_m, after.right_x_m,
@@ -21,10 +21,14 @@ std::optional<Degeneration> detect_degeneration(const Functionals& before, const
                   inverted_points);
     return Degeneration{text, inverted_where_m};
   }
+  // The bound of the mass error's jump for a body whose (sound) area was area_m2.
+  const auto jump_bound = [patch_area_m2](double area_m2) {
+    return area_m2 > 0.0 ? std::max(kMassErrorJump, patch_area_m2 / area_m2) : kMassErrorJump;
+  };
   const double jump = std::abs(after.mass_error - before.mass_error);
-  if (jump > kMassErrorJump) {
+  if (const double bound = jump_bound(before.solid_area_m2); jump > bound) {
     std::snprintf(text, sizeof text, "the mass error jumped from %.3g to %.3g in one step (more than %.2g)",
-                  before.mass_error, after.mass_error, kMassErrorJump);
+                  before.mass_error, after.mass_error, bound);
     return Degeneration{text, centroid};
   }
   double speed = std::max(std::hypot(before.mean_vx_mps, before.mean_vy_mps),
@@ -33,9 +37,9 @@ std::optional<Degeneration> detect_degeneration(const Functionals& before, const
   // near zero for two bodies that fly apart).
   for (std::size_t i = 0; i < after.bodies.size() && i < before.bodies.size(); ++i) {
     const Functionals::Body &b0 = before.bodies[i], &b1 = after.bodies[i];
-    if (std::abs(b1.mass_error - b0.mass_error) > kMassErrorJump) {
+    if (const double bound = jump_bound(b0.solid_area_m2); std::abs(b1.mass_error - b0.mass_error) > bound) {
       std::snprintf(text, sizeof text, "the mass error of body%zu jumped from %.3g to %.3g in one step (more than %.2g)",
-                    i + 1, b0.mass_error, b1.mass_error, kMassErrorJump);
+                    i + 1, b0.mass_error, b1.mass_error, bound);
       return Degeneration{text, {b1.centroid_x_m, b1.centroid_y_m}};
     }
     speed = std::max({speed, std::hypot(b0.mean_vx_mps, b0.mean_vy_mps), std::hypot(b1.mean_vx_mps, b1.mean_vy_mps)});
@@ -91,16 +95,24 @@ std::optional<Degeneration> body_at_open_boundary(const mesh::PatchMesh& mesh, c
   return std::nullopt;
 }
 
-double largest_cut_patch_side(const mesh::PatchMesh& mesh, const fe::CutMesh& before, const fe::CutMesh& after) {
-  double side_m = 0.0;
+CutPatchScale largest_cut_patch(const mesh::PatchMesh& mesh, const fe::CutMesh& before, const fe::CutMesh& after) {
+  CutPatchScale scale;
   for (int p = 0; p < mesh.num_patches(); ++p) {
     const mesh::Patch& patch = mesh.patches[p];
     bool at_interface = before.kind[p] != fe::PatchKind::uncut || after.kind[p] != fe::PatchKind::uncut;
     for (int c : mesh::kCornerLocal)
       at_interface = at_interface || before.corner_sign[patch.node[c]] == 0 || after.corner_sign[patch.node[c]] == 0;
-    if (at_interface) side_m = std::max(side_m, patch.size_m);
+    if (!at_interface) continue;
+    scale.side_m = std::max(scale.side_m, patch.size_m);
+    double twice_area = 0.0;  // the shoelace formula over the four corners in order
+    for (std::size_t i = 0; i < mesh::kCornerLocal.size(); ++i) {
+      const mesh::Vec2& a = mesh.nodes[patch.node[mesh::kCornerLocal[i]]];
+      const mesh::Vec2& b = mesh.nodes[patch.node[mesh::kCornerLocal[(i + 1) % mesh::kCornerLocal.size()]]];
+      twice_area += a.x() * b.y() - b.x() * a.y();
+    }
+    scale.area_m2 = std::max(scale.area_m2, 0.5 * std::abs(twice_area));
   }
-  return side_m;
+  return scale;
 }
 
 }  // namespace fsi::core

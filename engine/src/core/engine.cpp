@@ -447,9 +447,9 @@ struct Engine::Impl {
     if (std::optional<core::Degeneration> merged = core::merged_bodies(o.cut_next, o.body_next)) return merged;
     if (std::optional<core::Degeneration> open = core::body_at_open_boundary(mesh, o.cut_next)) return open;
     const core::SolidDeterminant det = core::solid_determinant(cut_next, quad, x);
-    return core::detect_degeneration(state.functionals, o.functionals, k,
-                                     core::largest_cut_patch_side(mesh, cut_next, o.cut_next), det.non_positive,
-                                     {det.where.x(), det.where.y()});
+    const core::CutPatchScale patch = core::largest_cut_patch(mesh, cut_next, o.cut_next);
+    return core::detect_degeneration(state.functionals, o.functionals, k, patch.side_m, det.non_positive,
+                                     {det.where.x(), det.where.y()}, patch.area_m2);
   }
 
   void accept(Eigen::VectorXd&& x, double k, fe::QuadratureTable&& quad_next, Outcome&& outcome, StepReport& report) {
