@@ -22,6 +22,8 @@ namespace fsi {
 struct StepEvent {
   /// degenerated: the step's solution broke the body (core/degeneration.hpp); it was not
   /// kept (retried shorter with FailurePolicy::halve_step, else rolled back).
+  /// contact_force_active: the penalty contact force or a convex corner's barrier
+  /// (ContactSpec::corner_barrier_speed_mps) pushed a body during the step.
   /// contact_retried: Newton did not converge in real contact, and the step was tried again
   /// at the same length with the wall's hold on the solid turned round (the contact patches
   /// held are released and the released held: core/contact_release.hpp).

@@ -314,6 +314,18 @@ struct ContactSpec {
   /// gap, too little to keep a ball rolling over the edge off it (docs/method.md, "Corners
   /// push like walls"). false: the chapter's formula literally.
   bool corners_as_walls = true;
+  /// A convex wall corner (a tread's edge) pushes a body that comes within
+  /// corner_barrier_reach_m of it, with or without the contact force (ours): a body that
+  /// touches a corner sticks to its one no-slip node and is torn apart within a few
+  /// steps, at any speed (docs/method.md, "Corner barrier"). The barrier is P_c with
+  /// dist to the corner's tangent line and a gamma of its own, per body, so strong that
+  /// it stores twice the kinetic energy of the body at this speed [m/s] before the
+  /// body reaches the corner; 0 switches the barrier off. Typical: 1 (the campaign's
+  /// envelope), advanced.
+  double corner_barrier_speed_mps = 1.0;
+  /// How far from a convex corner its barrier reaches [m] (advanced; typical 1e-2, a few
+  /// wall-patch heights).
+  double corner_barrier_reach_m = 1.0e-2;
 };
 
 struct OutputSpec {

@@ -22,6 +22,13 @@ std::vector<Eigen::Vector2d> wall_end_points(const std::vector<Segment2>& walls)
 
 }  // namespace
 
+double gap_to_interface(const Eigen::Vector2d& point, const std::vector<fe::InterfaceSegment>& interface, double cap_m) {
+  double gap = cap_m;
+  for (const fe::InterfaceSegment& seg : interface)
+    gap = std::min(gap, mesh::distance_to_segment(Segment2{{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}}, point));
+  return gap;
+}
+
 ContactDistance::ContactDistance(const std::vector<Segment2>& walls,
                                  const std::vector<fe::InterfaceSegment>& interface,
                                  const Eigen::Vector2d& body_centroid, double reach_m, double window_m,
@@ -29,10 +36,7 @@ ContactDistance::ContactDistance(const std::vector<Segment2>& walls,
     : walls_(walls), window_m_(window_m) {
   if (!corners_as_walls || interface.empty()) return;
   for (const Eigen::Vector2d& corner : wall_end_points(walls)) {
-    // The gap between the corner and the interface.
-    double gap = reach_m;
-    for (const fe::InterfaceSegment& seg : interface)
-      gap = std::min(gap, mesh::distance_to_segment(Segment2{{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}}, corner));
+    const double gap = gap_to_interface(corner, interface, reach_m);
     const Eigen::Vector2d to_body = body_centroid - corner;
     if (gap >= reach_m || !(to_body.norm() > 0.0)) continue;
     corner_walls_.push_back({corner, to_body.normalized()});

@@ -33,6 +33,10 @@
 
 namespace fsi::core {
 
+/// The distance from `point` to the nearest of the `interface` segments, capped at `cap_m`
+/// (the search stops mattering beyond a reach).
+double gap_to_interface(const Eigen::Vector2d& point, const std::vector<fe::InterfaceSegment>& interface, double cap_m);
+
 class ContactDistance {
  public:
   /// `reach_m`: dist_0, corners farther than this from the interface push nothing;

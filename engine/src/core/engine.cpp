@@ -570,6 +570,8 @@ struct Engine::Impl {
   NumericsSpec step_length_numerics() const {
     NumericsSpec n = scenario.numerics;
     if (scenario.contact.gamma_c > 0.0) n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, scenario.contact.dist0_m);
+    if (scenario.contact.corner_barrier_speed_mps > 0.0)
+      n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, scenario.contact.corner_barrier_reach_m);
     return n;
   }
 
@@ -587,7 +589,9 @@ struct Engine::Impl {
     run_attempts(k, quad, report, attempts);
     if (system.max_contact_pressure() > 0.0)
       report.events.push_back({StepEvent::Kind::contact_force_active, state.time_s, {}, -1,
-                               "penalty contact active, max pressure " +
+                               std::string(system.corner_barrier_acted() ? "penalty contact or corner barrier active"
+                                                                         : "penalty contact active") +
+                                   ", max pressure " +
                                    std::to_string(system.max_contact_pressure()) + " Pa, force on the body (" +
                                    std::to_string(system.contact_force_on_body().x()) + ", " +
                                    std::to_string(system.contact_force_on_body().y()) + ") N/m" +

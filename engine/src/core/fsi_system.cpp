@@ -6,6 +6,7 @@
 #include <span>
 
 #include "core/contact_distance.hpp"
+#include "core/corner_barrier.hpp"
 #include "core/initial_guess.hpp"
 #include "core/parallel_chunks.hpp"
 #include "forms/fluid_element_jacobian.hpp"
@@ -201,6 +202,7 @@ void FsiSystem::build_contact_forces() {
   const fe::CutMesh& cut = *cut_;
   contact_force_.setZero(pattern_.rows());
   max_contact_pressure_ = 0.0;
+  corner_barrier_acted_ = false;
   contact_force_on_body_n_per_m_ = mesh::Vec2::Zero();
   min_body_gap_m_ = std::numeric_limits<double>::infinity();
   closest_bodies_ = {-1, -1};
@@ -233,10 +235,15 @@ void FsiSystem::build_contact_forces() {
           closest_bodies_ = {segment_body[i], gap.body};
         }
       }
-  const double gamma_c = scenario_.contact.gamma_c, dist0 = scenario_.contact.dist0_m;
-  if (!(gamma_c > 0.0 && dist0 > 0.0)) return;
-  // Tread edges push like a flat wall tangent to the body (contact_distance.hpp): one
-  // distance per body, each with its own centroid.
+  const ContactSpec& contact = scenario_.contact;
+  const double gamma_c = contact.gamma_c, dist0 = contact.dist0_m;
+  const bool penalty = gamma_c > 0.0 && dist0 > 0.0;
+  const bool barrier = contact.corner_barrier_speed_mps > 0.0 && contact.corner_barrier_reach_m > 0.0 &&
+                       scenario_.walls.size() >= 2;
+  if (!penalty && !barrier) return;
+  // Tread edges push like a flat wall tangent to the body (contact_distance.hpp), and
+  // convex corners keep bodies off (corner_barrier.hpp): one of each per body, each with
+  // the body's own centroid.
   std::vector<Eigen::Vector2d> body_centroid_m(num_bodies, Eigen::Vector2d::Zero());
   std::vector<double> solid_area_m2(num_bodies, 0.0);
   for (int k = 0; k < cut.num_elements(); ++k) {
@@ -249,13 +256,22 @@ void FsiSystem::build_contact_forces() {
   }
   const std::span<const BodySpec> bodies = scene_bodies(scenario_);
   std::vector<ContactDistance> distances;
+  std::vector<CornerBarrier> barriers;
   for (std::size_t b = 0; b < num_bodies; ++b) {
     if (solid_area_m2[b] > 0.0) body_centroid_m[b] /= solid_area_m2[b];
     std::vector<fe::InterfaceSegment> own;
     for (std::size_t i = 0; i < cut.interface.size(); ++i)
       if (segment_body[i] == static_cast<int>(b)) own.push_back(cut.interface[i]);
-    distances.emplace_back(scenario_.walls, own, body_centroid_m[b], dist0, body_reach(bodies[b]),
-                           scenario_.contact.corners_as_walls && solid_area_m2[b] > 0.0);
+    distances.emplace_back(scenario_.walls, own, body_centroid_m[b], penalty ? dist0 : 0.0, body_reach(bodies[b]),
+                           penalty && contact.corners_as_walls && solid_area_m2[b] > 0.0);
+    const double reach = contact.corner_barrier_reach_m;
+    const double gamma_b =
+        barrier && solid_area_m2[b] > 0.0
+            ? CornerBarrier::gamma_for(body_material_[b].density_kgpm3 * solid_area_m2[b],
+                                       contact.corner_barrier_speed_mps, body_reach(bodies[b]), reach)
+            : 0.0;
+    barriers.emplace_back(scenario_.walls, own, body_centroid_m[b], reach, body_reach(bodies[b]), gamma_b,
+                          contact.min_dist_fraction);
   }
   const bool bodies_near = min_body_gap_m_ < dist0;
   const double g = 0.5 / std::sqrt(3.0);
@@ -278,12 +294,17 @@ void FsiSystem::build_contact_forces() {
     mesh::Vec2 n(d.y() / len, -d.x() / len);
     if (n.dot(0.5 * (seg.a + seg.b) - centroid) < 0.0) n = -n;
     const ContactDistance& distance = distances[static_cast<std::size_t>(segment_body[i])];
+    const CornerBarrier& corner_barrier = barriers[static_cast<std::size_t>(segment_body[i])];
     for (double s : {0.5 - g, 0.5 + g}) {
       const mesh::Vec2 x = seg.a + s * d;
-      double dist = distance(x);
-      if (bodies_near) dist = std::min(dist, gap_to_other_bodies(x, segment_body[i]).distance_m);
-      if (dist >= dist0) continue;
-      const double pc = gamma_c * (dist0 - dist) / std::max(dist, scenario_.contact.min_dist_fraction * dist0);
+      double pc = corner_barrier.pressure_pa(x);
+      corner_barrier_acted_ = corner_barrier_acted_ || pc > 0.0;
+      if (penalty) {
+        double dist = distance(x);
+        if (bodies_near) dist = std::min(dist, gap_to_other_bodies(x, segment_body[i]).distance_m);
+        if (dist < dist0) pc = std::max(pc, gamma_c * (dist0 - dist) / std::max(dist, contact.min_dist_fraction * dist0));
+      }
+      if (!(pc > 0.0)) continue;
       max_contact_pressure_ = std::max(max_contact_pressure_, pc);
       const double w = 0.5 * len * pc;
       contact_force_on_body_n_per_m_ -= mesh::Vec2(w * n[0], w * n[1]);

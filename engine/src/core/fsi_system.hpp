@@ -75,6 +75,8 @@ class FsiSystem {
 
   /// The largest penalty contact pressure of this step [Pa] (0: inactive).
   double max_contact_pressure() const { return max_contact_pressure_; }
+  /// Whether a convex corner's barrier pushed a body this step (corner_barrier.hpp).
+  bool corner_barrier_acted() const { return corner_barrier_acted_; }
   /// The penalty force on the bodies this step, -int_I P_c n_s [N per m of depth], summed.
   mesh::Vec2 contact_force_on_body() const { return contact_force_on_body_n_per_m_; }
   /// The same for each body (scene order).
@@ -119,6 +121,7 @@ class FsiSystem {
   std::vector<forms::OpenBoundarySide> open_sides_;
   Eigen::VectorXd contact_force_;                  ///< constant residual part
   double max_contact_pressure_ = 0.0;
+  bool corner_barrier_acted_ = false;
   mesh::Vec2 contact_force_on_body_n_per_m_ = mesh::Vec2::Zero();
   std::vector<mesh::Vec2> contact_force_per_body_n_per_m_;
   double min_body_gap_m_ = 0.0;

@@ -150,6 +150,11 @@ nlohmann::json fingerprint_object_v3(const Scenario& scenario) {
   // like walls").
   if (scenario.contact.corners_as_walls == ContactSpec{}.corners_as_walls)
     writer.object["contact"].erase("corners_as_walls");
+  // And the corner barrier at its defaults (docs/method.md, "Corner barrier").
+  if (scenario.contact.corner_barrier_speed_mps == ContactSpec{}.corner_barrier_speed_mps)
+    writer.object["contact"].erase("corner_barrier_speed_mps");
+  if (scenario.contact.corner_barrier_reach_m == ContactSpec{}.corner_barrier_reach_m)
+    writer.object["contact"].erase("corner_barrier_reach_m");
   // And buoyancy off and the circle, as every scenario was before the keys existed.
   if (!scenario.buoyancy) writer.object.erase("buoyancy");
   // The same for the keys of several bodies and other shapes.

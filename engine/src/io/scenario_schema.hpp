@@ -185,6 +185,8 @@ void visit_fields(V& v, S& c) {
   v("dist0_m", c.dist0_m, Real{0.0, 1.0e3, false, false, "m"});
   v("min_dist_fraction", c.min_dist_fraction, Real{0.0, 1.0, true, false, "(fraction of dist0_m)"});
   v("corners_as_walls", c.corners_as_walls, Flag{});
+  v("corner_barrier_speed_mps", c.corner_barrier_speed_mps, Real{0.0, 1.0e3, false, false, "m/s (0: no barrier)"});
+  v("corner_barrier_reach_m", c.corner_barrier_reach_m, Real{0.0, 1.0, true, false, "m"});
 }
 
 template <class V, Like<OutputSpec> S>
