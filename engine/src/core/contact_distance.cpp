@@ -1,6 +1,7 @@
 #include "core/contact_distance.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "mesh/walls.hpp"
 
@@ -22,11 +23,20 @@ std::vector<Eigen::Vector2d> wall_end_points(const std::vector<Segment2>& walls)
 
 }  // namespace
 
-double gap_to_interface(const Eigen::Vector2d& point, const std::vector<fe::InterfaceSegment>& interface, double cap_m) {
-  double gap = cap_m;
+std::optional<CornerLine> CornerLine::within_reach(const Eigen::Vector2d& corner,
+                                                   const std::vector<fe::InterfaceSegment>& interface,
+                                                   const Eigen::Vector2d& body_centroid, double reach_m) {
+  const Eigen::Vector2d to_body = body_centroid - corner;
+  if (!(to_body.norm() > 0.0)) return std::nullopt;
   for (const fe::InterfaceSegment& seg : interface)
-    gap = std::min(gap, mesh::distance_to_segment(Segment2{{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}}, point));
-  return gap;
+    if (mesh::distance_to_segment(Segment2{{seg.a.x(), seg.a.y()}, {seg.b.x(), seg.b.y()}}, corner) < reach_m)
+      return CornerLine{corner, to_body.normalized()};
+  return std::nullopt;
+}
+
+double CornerLine::distance_m(const Eigen::Vector2d& x, double window_m) const {
+  if ((x - corner).norm() > window_m) return std::numeric_limits<double>::infinity();
+  return std::max(0.0, (x - corner).dot(normal));
 }
 
 ContactDistance::ContactDistance(const std::vector<Segment2>& walls,
@@ -36,19 +46,14 @@ ContactDistance::ContactDistance(const std::vector<Segment2>& walls,
     : walls_(walls), window_m_(window_m) {
   if (!corners_as_walls || interface.empty()) return;
   for (const Eigen::Vector2d& corner : wall_end_points(walls)) {
-    const double gap = gap_to_interface(corner, interface, reach_m);
-    const Eigen::Vector2d to_body = body_centroid - corner;
-    if (gap >= reach_m || !(to_body.norm() > 0.0)) continue;
-    corner_walls_.push_back({corner, to_body.normalized()});
+    if (const std::optional<CornerLine> line = CornerLine::within_reach(corner, interface, body_centroid, reach_m))
+      corner_walls_.push_back(*line);
   }
 }
 
 double ContactDistance::operator()(const Eigen::Vector2d& x) const {
   double d = mesh::distance_to_walls(walls_, x).distance_m;
-  for (const CornerWall& c : corner_walls_) {
-    if ((x - c.corner).norm() > window_m_) continue;
-    d = std::min(d, std::max(0.0, (x - c.corner).dot(c.normal)));
-  }
+  for (const CornerLine& line : corner_walls_) d = std::min(d, line.distance_m(x, window_m_));
   return d;
 }
 

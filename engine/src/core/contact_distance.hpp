@@ -24,6 +24,7 @@
 /// walls and that line. For a convex body this gives the flat wall's pressure profile at
 /// the same gap; it only ever shortens distances, so a flat wall, a concave corner (never
 /// nearest to a body point) and everything beyond dist_0 stay as they were.
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -33,9 +34,24 @@
 
 namespace fsi::core {
 
-/// The distance from `point` to the nearest of the `interface` segments, capped at `cap_m`
-/// (the search stops mattering beyond a reach).
-double gap_to_interface(const Eigen::Vector2d& point, const std::vector<fe::InterfaceSegment>& interface, double cap_m);
+/// The line through a wall corner tangent to a body: perpendicular to the direction from
+/// the corner to the body's centroid (for a ball, the tangent where it is nearest the
+/// corner). Both the contact force's corners and the corner barrier (corner_barrier.hpp)
+/// measure their gap to it.
+struct CornerLine {
+  Eigen::Vector2d corner;
+  Eigen::Vector2d normal;  ///< unit, from the corner towards the body
+
+  /// The line of `corner` when the body's `interface` comes within `reach_m` of it
+  /// (none: farther, or the centroid on the corner).
+  static std::optional<CornerLine> within_reach(const Eigen::Vector2d& corner,
+                                                const std::vector<fe::InterfaceSegment>& interface,
+                                                const Eigen::Vector2d& body_centroid, double reach_m);
+
+  /// The distance of x from the line on the body's side (0 behind it) for x within
+  /// `window_m` of the corner; infinity beyond the window.
+  double distance_m(const Eigen::Vector2d& x, double window_m) const;
+};
 
 class ContactDistance {
  public:
@@ -53,12 +69,8 @@ class ContactDistance {
   int num_corner_walls() const { return static_cast<int>(corner_walls_.size()); }
 
  private:
-  struct CornerWall {
-    Eigen::Vector2d corner;
-    Eigen::Vector2d normal;  ///< unit, from the corner towards the body
-  };
   const std::vector<Segment2>& walls_;
-  std::vector<CornerWall> corner_walls_;
+  std::vector<CornerLine> corner_walls_;
   double window_m_;
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/contact_distance.hpp"
 
 namespace fsi::core {
 
@@ -35,21 +34,16 @@ CornerBarrier::CornerBarrier(const std::vector<Segment2>& walls, const std::vect
                              double min_dist_fraction)
     : reach_m_(reach_m), window_m_(window_m), gamma_(gamma), min_dist_m_(min_dist_fraction * reach_m) {
   if (!(reach_m > 0.0 && gamma > 0.0) || interface.empty()) return;
-  for (const Eigen::Vector2d& corner : convex_corners(walls, body_centroid)) {
-    const double gap = gap_to_interface(corner, interface, reach_m);
-    const Eigen::Vector2d to_body = body_centroid - corner;
-    if (gap >= reach_m || !(to_body.norm() > 0.0)) continue;
-    corners_.push_back({corner, to_body.normalized()});
-  }
+  for (const Eigen::Vector2d& corner : convex_corners(walls, body_centroid))
+    if (const std::optional<CornerLine> line = CornerLine::within_reach(corner, interface, body_centroid, reach_m))
+      corners_.push_back(*line);
 }
 
 double CornerBarrier::pressure_pa(const Eigen::Vector2d& x) const {
   double p = 0.0;
-  for (const Corner& c : corners_) {
-    if ((x - c.point).norm() > window_m_) continue;
-    const double d = std::max(0.0, (x - c.point).dot(c.normal));
-    if (d >= reach_m_) continue;
-    p = std::max(p, gamma_ * (reach_m_ - d) / std::max(d, min_dist_m_));
+  for (const CornerLine& line : corners_) {
+    const double d = line.distance_m(x, window_m_);
+    if (d < reach_m_) p = std::max(p, gamma_ * (reach_m_ - d) / std::max(d, min_dist_m_));
   }
   return p;
 }

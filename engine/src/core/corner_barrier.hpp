@@ -14,7 +14,7 @@
 /// So a convex corner within `reach_m` of a body pushes it, whatever the contact settings:
 /// the pressure P = gamma (reach - d) / max(d, f reach) on the interface points within the
 /// body's reach of the corner, d the distance to the line through the corner tangent to
-/// the body (ContactDistance's corner line). For a round body of radius R the work of that
+/// the body (CornerLine, contact_distance.hpp). For a round body of radius R the work of that
 /// pressure from d = reach to d = 0 is 1.84 gamma reach sqrt(2 R reach) (f = 0.1, the
 /// integral in CornerBarrier::gamma_for); gamma is chosen so that this is twice the
 /// kinetic energy of the body at the design speed, which leaves half for the fluid's
@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 
+#include "core/contact_distance.hpp"
 #include "fe/cut_mesh.hpp"
 #include "fsi/field_view.hpp"
 
@@ -49,15 +50,12 @@ class CornerBarrier {
   int num_corners() const { return static_cast<int>(corners_.size()); }
 
   /// The strength that stores twice the kinetic energy 1/2 m v^2 of a body of `mass_kg_per_m`
-  /// at `speed_mps` within `reach_m` of a corner, for a round body of radius `radius_m`.
+  /// at `speed_mps` within `reach_m` of a corner, for a round body of radius `radius_m`
+  /// (FsiSystem: the body's own mass rho_s times its shape's area, a constant of the scenario).
   static double gamma_for(double mass_kg_per_m, double speed_mps, double radius_m, double reach_m);
 
  private:
-  struct Corner {
-    Eigen::Vector2d point;
-    Eigen::Vector2d normal;  ///< unit, from the corner towards the body
-  };
-  std::vector<Corner> corners_;
+  std::vector<CornerLine> corners_;
   double reach_m_;
   double window_m_;
   double gamma_;

@@ -267,7 +267,7 @@ void FsiSystem::build_contact_forces() {
     const double reach = contact.corner_barrier_reach_m;
     const double gamma_b =
         barrier && solid_area_m2[b] > 0.0
-            ? CornerBarrier::gamma_for(body_material_[b].density_kgpm3 * solid_area_m2[b],
+            ? CornerBarrier::gamma_for(body_material_[b].density_kgpm3 * body_area(bodies[b]),
                                        contact.corner_barrier_speed_mps, body_reach(bodies[b]), reach)
             : 0.0;
     barriers.emplace_back(scenario_.walls, own, body_centroid_m[b], reach, body_reach(bodies[b]), gamma_b,
