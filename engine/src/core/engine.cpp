@@ -10,6 +10,7 @@
 
 #include "core/contact_release.hpp"
 #include "core/degeneration.hpp"
+#include "core/flat_wall_rows.hpp"
 #include "core/field_view_builder.hpp"
 #include "core/fsi_system.hpp"
 #include "core/functionals.hpp"
@@ -448,8 +449,11 @@ struct Engine::Impl {
     if (std::optional<core::Degeneration> open = core::body_at_open_boundary(mesh, o.cut_next)) return open;
     const core::SolidDeterminant det = core::solid_determinant(cut_next, quad, x);
     const core::CutPatchScale patch = core::largest_cut_patch(mesh, cut_next, o.cut_next);
-    return core::detect_degeneration(state.functionals, o.functionals, k, patch.side_m, det.non_positive,
-                                     {det.where.x(), det.where.y()}, patch.area_m2);
+    std::optional<core::Degeneration> d = core::detect_degeneration(
+        state.functionals, o.functionals, k, patch.side_m, det.non_positive, {det.where.x(), det.where.y()},
+        patch.area_m2);
+    if (d && det.non_positive > 0) d->cause += core::flat_wall_row_note(mesh, d->where_m);
+    return d;
   }
 
   void accept(Eigen::VectorXd&& x, double k, fe::QuadratureTable&& quad_next, Outcome&& outcome, StepReport& report) {
