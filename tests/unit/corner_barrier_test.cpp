@@ -79,4 +79,22 @@ TEST(CornerBarrier, NothingBeyondItsReachNorWithoutStrength) {
   EXPECT_EQ(fsi::core::CornerBarrier(stair(), close, near, 1e-2, 0.3, 0.0, 0.1).num_corners(), 0);
 }
 
+TEST(CornerBarrier, ABodyTooSoftForItsBarrierGetsALongerReach) {
+  using fsi::core::CornerBarrier;
+  // Campaign seed 5, case 24: R = 0.3052 m, rho_s = 2255 kg/m^3, mu_s = 6.902e4 Pa.
+  const double radius = 0.3052, mass = 2255.0 * std::numbers::pi * radius * radius, mu = 6.902e4;
+  EXPECT_NEAR(CornerBarrier::gamma_for(mass, 1.0, radius, 1e-2), 4.59e5, 0.01e5);
+  const double reach = CornerBarrier::reach_for(mass, 1.0, radius, 1e-2, mu);
+  EXPECT_NEAR(reach, 0.0354, 0.0005);
+  EXPECT_NEAR(CornerBarrier::gamma_for(mass, 1.0, radius, reach), mu, 1e-6 * mu);
+  // Twice the kinetic energy either way: the same work over the longer approach.
+  EXPECT_NEAR(1.84 * reach * std::sqrt(2.0 * radius * reach) * CornerBarrier::gamma_for(mass, 1.0, radius, reach),
+              mass, 1e-9 * mass);
+  // A stiff ball (mu_s = 3.2e6 Pa) keeps the shortest reach; Example 1's ball (gamma 3.05e5
+  // N/m within 1 cm, mu_s = 2e5 Pa) gets 1.3 cm.
+  EXPECT_EQ(CornerBarrier::reach_for(mass, 1.0, radius, 1e-2, 3.2e6), 1e-2);
+  EXPECT_NEAR(CornerBarrier::reach_for(1000.0 * std::numbers::pi * 0.16, 1.0, 0.4, 1e-2, 2e5), 0.0133, 0.0001);
+  EXPECT_EQ(CornerBarrier::reach_for(mass, 1.0, radius, 1e-2, 0.0), 1e-2);  // no modulus: no change
+}
+
 }  // namespace

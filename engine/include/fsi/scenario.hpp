@@ -323,8 +323,10 @@ struct ContactSpec {
   /// body reaches the corner; 0 switches the barrier off. Typical: 1 (the campaign's
   /// envelope), advanced.
   double corner_barrier_speed_mps = 1.0;
-  /// How far from a convex corner its barrier reaches [m] (advanced; typical 1e-2, a few
-  /// wall-patch heights).
+  /// How far from a convex corner its barrier reaches at least [m] (advanced; typical 1e-2,
+  /// a few wall-patch heights). A body too soft for the barrier's pressure there gets a
+  /// longer reach, where the barrier's strength is its shear modulus mu_s (the same work
+  /// over a longer approach).
   double corner_barrier_reach_m = 1.0e-2;
 };
 

@@ -58,4 +58,17 @@ double CornerBarrier::gamma_for(double mass_kg_per_m, double speed_mps, double r
   return 2.0 * 0.5 * mass_kg_per_m * speed_mps * speed_mps / work_per_gamma;
 }
 
+double CornerBarrier::reach_for(double mass_kg_per_m, double speed_mps, double radius_m, double min_reach_m,
+                                double mu_pa) {
+  const double gamma = gamma_for(mass_kg_per_m, speed_mps, radius_m, min_reach_m);
+  if (!(mu_pa > 0.0) || !(gamma > mu_pa)) return min_reach_m;
+  return min_reach_m * std::cbrt((gamma / mu_pa) * (gamma / mu_pa));
+}
+
+double corner_barrier_reach_m(const Scenario& scenario, const BodySpec& body) {
+  const SolidSpec& solid = body_solid(scenario, body);
+  return CornerBarrier::reach_for(solid.density_kgpm3 * body_area(body), scenario.contact.corner_barrier_speed_mps,
+                                  body_reach(body), scenario.contact.corner_barrier_reach_m, solid.mu_pa);
+}
+
 }  // namespace fsi::core

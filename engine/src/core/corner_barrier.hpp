@@ -26,6 +26,7 @@
 #include "core/contact_distance.hpp"
 #include "fe/cut_mesh.hpp"
 #include "fsi/field_view.hpp"
+#include "fsi/scenario.hpp"
 
 namespace fsi::core {
 
@@ -54,6 +55,17 @@ class CornerBarrier {
   /// (FsiSystem: the body's own mass rho_s times its shape's area, a constant of the scenario).
   static double gamma_for(double mass_kg_per_m, double speed_mps, double radius_m, double reach_m);
 
+  /// The reach of a body's barrier: `min_reach_m` (ContactSpec::corner_barrier_reach_m),
+  /// or, for a body too soft for the pressure gamma_for gives there, the reach at which
+  /// gamma equals its shear modulus `mu_pa` (gamma falls as reach^(-3/2)). The same work
+  /// spread over a longer approach: a heavy, soft ball (campaign seed 5, case 24:
+  /// rho_s/rho_f = 3.5, mu_s = 6.9e4 Pa, at 0.97 m/s beside a tread's edge) had a
+  /// barrier 6.7 times its mu_s within 1 cm and Newton stalled 9 mm from the edge; with
+  /// the reach of 3.5 cm it lands on the tread beside the edge and runs to t = 3 s with
+  /// every step converged.
+  static double reach_for(double mass_kg_per_m, double speed_mps, double radius_m, double min_reach_m,
+                          double mu_pa);
+
  private:
   std::vector<CornerLine> corners_;
   double reach_m_;
@@ -61,5 +73,9 @@ class CornerBarrier {
   double gamma_;
   double min_dist_m_;
 };
+
+/// The reach of `body`'s barrier in `scenario`: CornerBarrier::reach_for with the body's
+/// mass (rho_s times its shape's area, a constant of the scenario) and shear modulus.
+double corner_barrier_reach_m(const Scenario& scenario, const BodySpec& body);
 
 }  // namespace fsi::core

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/contact_release.hpp"
+#include "core/corner_barrier.hpp"
 #include "core/degeneration.hpp"
 #include "core/flat_wall_rows.hpp"
 #include "core/field_view_builder.hpp"
@@ -570,12 +571,15 @@ struct Engine::Impl {
   }
 
   /// The numerics the step length is chosen with: the wall zone at least the contact
-  /// force's reach (NumericsSpec::time_step_wall_zone_m).
+  /// force's and the corner barrier's reach (NumericsSpec::time_step_wall_zone_m).
   NumericsSpec step_length_numerics() const {
     NumericsSpec n = scenario.numerics;
     if (scenario.contact.gamma_c > 0.0) n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, scenario.contact.dist0_m);
+    // The corner barrier's reach, where there is a convex corner (a box has none).
     if (scenario.contact.corner_barrier_speed_mps > 0.0)
-      n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, scenario.contact.corner_barrier_reach_m);
+      for (const BodySpec& body : scene_bodies(scenario))
+        if (!core::convex_corners(scenario.walls, {body.center_m.x, body.center_m.y}).empty())
+          n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, core::corner_barrier_reach_m(scenario, body));
     return n;
   }
 

@@ -264,12 +264,11 @@ void FsiSystem::build_contact_forces() {
       if (segment_body[i] == static_cast<int>(b)) own.push_back(cut.interface[i]);
     distances.emplace_back(scenario_.walls, own, body_centroid_m[b], penalty ? dist0 : 0.0, body_reach(bodies[b]),
                            penalty && contact.corners_as_walls && solid_area_m2[b] > 0.0);
-    const double reach = contact.corner_barrier_reach_m;
-    const double gamma_b =
-        barrier && solid_area_m2[b] > 0.0
-            ? CornerBarrier::gamma_for(body_material_[b].density_kgpm3 * body_area(bodies[b]),
-                                       contact.corner_barrier_speed_mps, body_reach(bodies[b]), reach)
-            : 0.0;
+    const double reach = corner_barrier_reach_m(scenario_, bodies[b]);
+    const double gamma_b = barrier && solid_area_m2[b] > 0.0
+                               ? CornerBarrier::gamma_for(body_material_[b].density_kgpm3 * body_area(bodies[b]),
+                                                          contact.corner_barrier_speed_mps, body_reach(bodies[b]), reach)
+                               : 0.0;
     barriers.emplace_back(scenario_.walls, own, body_centroid_m[b], reach, body_reach(bodies[b]), gamma_b,
                           contact.min_dist_fraction);
   }
