@@ -11,8 +11,8 @@
 #include "core/contact_release.hpp"
 #include "core/corner_barrier.hpp"
 #include "core/degeneration.hpp"
-#include "core/flat_wall_rows.hpp"
 #include "core/field_view_builder.hpp"
+#include "core/flat_wall_rows.hpp"
 #include "core/fsi_system.hpp"
 #include "core/functionals.hpp"
 #include "core/initial_guess.hpp"
@@ -45,7 +45,8 @@ struct Engine::Impl {
         mesh(mesh::build_patch_mesh(scenario.mesh, scenario.walls)),
         buckets(mesh),
         system(scenario, mesh),
-        newton(system.pattern()) {
+        newton(system.pattern()),
+        barrier_wall_zone_m(corner_barrier_wall_zone_m(scenario)) {
     initialize();
   }
 
@@ -62,6 +63,19 @@ struct Engine::Impl {
   std::vector<int> body_cur, body_next;
   fe::CutData data_next;
   fe::QuadratureTable quad_cur;
+  /// The longest corner-barrier reach of the scene's bodies where the walls have a convex
+  /// corner (a box has none), 0 otherwise: walls, bodies and contact settings are fixed
+  /// for a run, so it is found once, not in every step.
+  double barrier_wall_zone_m = 0.0;
+
+  static double corner_barrier_wall_zone_m(const Scenario& scenario) {
+    double zone_m = 0.0;
+    if (scenario.contact.corner_barrier_speed_mps > 0.0)
+      for (const BodySpec& body : scene_bodies(scenario))
+        if (!core::convex_corners(scenario.walls, {body.center_m.x, body.center_m.y}).empty())
+          zone_m = std::max(zone_m, core::corner_barrier_reach_m(scenario, body));
+    return zone_m;
+  }
 
   fe::CutOptions cut_options() const {
     return fe::CutOptions{scenario.numerics.cut_snap, scenario.numerics.cut_snap_distance_m,
@@ -575,11 +589,7 @@ struct Engine::Impl {
   NumericsSpec step_length_numerics() const {
     NumericsSpec n = scenario.numerics;
     if (scenario.contact.gamma_c > 0.0) n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, scenario.contact.dist0_m);
-    // The corner barrier's reach, where there is a convex corner (a box has none).
-    if (scenario.contact.corner_barrier_speed_mps > 0.0)
-      for (const BodySpec& body : scene_bodies(scenario))
-        if (!core::convex_corners(scenario.walls, {body.center_m.x, body.center_m.y}).empty())
-          n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, core::corner_barrier_reach_m(scenario, body));
+    n.time_step_wall_zone_m = std::max(n.time_step_wall_zone_m, barrier_wall_zone_m);
     return n;
   }
 

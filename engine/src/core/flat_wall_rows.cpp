@@ -46,13 +46,13 @@ WallRow widest_wall_row_near(const mesh::PatchMesh& mesh, Point2 where_m) {
 
 std::string flat_wall_row_note(const mesh::PatchMesh& mesh, Point2 where_m) {
   const WallRow row = widest_wall_row_near(mesh, where_m);
-  if (row.aspect <= kFlatWallRowAspect * (1.0 + 1e-9)) return {};  // 16 by rounding is 16
+  if (row.aspect <= kFlatWallRowAspect * (1.0 + 1e-9)) return {};  // the limit itself, up to rounding
   char text[512];
   std::snprintf(text, sizeof text,
                 "; there wall %d's row of patches is %.0f times as wide as thick (%.3g m along the wall, %.3g m "
                 "across), which resolves a flattened body along the wall by few nodes: several landings that broke on "
-                "such rows held on rows at most 16 times as wide as thick (docs/solver.md, \"Flat rows at a wall\")",
-                row.wall, row.aspect, row.width_m, row.thickness_m);
+                "such rows held on rows at most %.0f times as wide as thick (docs/solver.md, \"Flat rows at a wall\")",
+                row.wall, row.aspect, row.width_m, row.thickness_m, kFlatWallRowAspect);
   return text;
 }
 
